@@ -1,0 +1,172 @@
+// The rasterizer pipeline: runs each stage in order on plain structs and records what it did.
+#include "raster/render.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "raster/clip.h"
+#include "raster/errors.h"
+#include "raster/parallel.h"
+#include "raster/rasterize.h"
+#include "raster/resolve.h"
+#include "raster/sample_pattern.h"
+#include "raster/setup.h"
+#include "raster/shade.h"
+#include "raster/vertex_stage.h"
+
+namespace raster {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+constexpr size_t kSetupChunk = 4096;
+
+}  // namespace
+
+uint64_t frame_bytes(const RenderSettings& settings) {
+    // Per sample: visibility buffer (4 id + 12 barycentrics + 4 depth) + z-buffer 4 + winner 4.
+    // Per pixel: up to 4 bytes of output image.
+    const uint64_t pixels = uint64_t(std::max(settings.width, 0)) * uint64_t(std::max(settings.height, 0));
+    return pixels * uint64_t(std::max(settings.samples, 0)) * 28u + pixels * 4u;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options) {
+    const auto start = Clock::now();
+    const RenderSettings& settings = scene.settings;
+    RenderResult result;
+    RenderStats& stats = result.stats;
+
+    auto stage_start = Clock::now();
+    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(settings.shading));
+    stats.triangles = geometry.triangles.size();
+    stats.ms_vertex = milliseconds_since(stage_start);
+
+    // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
+    stage_start = Clock::now();
+    const ClipVolume volume{scene.camera.near, scene.camera.far};
+    const SetupParams setup_params{settings.width, settings.height, settings.snap_bits, settings.cull_backfaces};
+    const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    std::vector<std::vector<TriangleSetup>> chunk_setups(chunks);
+    std::vector<size_t> chunk_clipped(chunks, 0);
+    parallel_for(chunks, options.threads, [&](size_t chunk) {
+        const size_t begin = chunk * kSetupChunk;
+        const size_t end = std::min(geometry.triangles.size(), begin + kSetupChunk);
+        auto& out = chunk_setups[chunk];
+        out.reserve(end - begin);
+        for (size_t tri = begin; tri < end; ++tri) {
+            const TriangleIndices& v = geometry.triangles[tri];
+            const ClippedPolygon polygon =
+                clip_triangle(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]], volume);
+            chunk_clipped[chunk] += polygon.clipped;
+            setup_polygon(polygon, static_cast<uint32_t>(tri), setup_params, out);
+        }
+    });
+    std::vector<TriangleSetup> setups;
+    for (size_t chunk = 0; chunk < chunks; ++chunk) {
+        setups.insert(setups.end(), chunk_setups[chunk].begin(), chunk_setups[chunk].end());
+        stats.clipped += chunk_clipped[chunk];
+    }
+    stats.rasterized = setups.size();
+    stats.ms_setup = milliseconds_since(stage_start);
+
+    stage_start = Clock::now();
+    RasterParams raster_params;
+    raster_params.width = settings.width;
+    raster_params.height = settings.height;
+    raster_params.snap_bits = settings.snap_bits;
+    raster_params.sample_offsets = sample_offsets(settings.samples, settings.pattern);
+    raster_params.threads = options.threads;
+    rasterize(setups, raster_params, result.visibility);
+    stats.samples = result.visibility.size();
+    stats.ms_raster = milliseconds_since(stage_start);
+
+    stage_start = Clock::now();
+    const Shader shader(scene, geometry);
+    ResolveParams resolve_params;
+    resolve_params.msaa = settings.msaa;
+    resolve_params.background = settings.background;
+    resolve_params.alpha = options.alpha;
+    resolve_params.threads = options.threads;
+    result.image = resolve_image(result.visibility, shader, resolve_params);
+    stats.ms_shade = milliseconds_since(stage_start);
+
+    for (uint32_t id : result.visibility.triangle) stats.covered_samples += id != kNoTriangle;
+    stats.ms_total = milliseconds_since(start);
+    return result;
+}
+
+namespace {
+
+bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+std::string settings_problem(const RenderSettings& s) {
+    if (s.width < 1 || s.height < 1 || s.width > kMaxImageDimension || s.height > kMaxImageDimension)
+        return "image size " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is outside 1.." +
+               std::to_string(kMaxImageDimension) + " per side";
+    if (std::string error = sample_count_error(s.samples, s.pattern); !error.empty()) return error;
+    if (frame_bytes(s) > kMaxFrameBytes)
+        return "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " image with " +
+               std::to_string(s.samples) + " samples needs " + std::to_string(frame_bytes(s) >> 20) +
+               " MiB of frame buffers, over the " + std::to_string(kMaxFrameBytes >> 20) + " MiB cap";
+    if (s.snap_bits < kMinSnapBits || s.snap_bits > kMaxSnapBits)
+        return "snap bits must be " + std::to_string(kMinSnapBits) + ".." + std::to_string(kMaxSnapBits);
+    if (!finite3(s.background) || !finite3(s.ambient_light)) return "background and ambient light must be finite";
+    return "";
+}
+
+std::string camera_problem(const Camera& c) {
+    if (!finite3(c.eye) || !finite3(c.target) || !finite3(c.up)) return "camera eye, target and up must be finite";
+    if (!(c.near > 0.0f) || !std::isfinite(c.near)) return "camera near must be > 0, got " + std::to_string(c.near);
+    if (!(c.far > c.near) || !std::isfinite(c.far))
+        return "camera far (" + std::to_string(c.far) + ") must be finite and greater than near (" +
+               std::to_string(c.near) + ")";
+    if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
+        return "camera field of view must be in (0, 180) degrees, got " + std::to_string(c.fov_y_degrees);
+    const glm::vec3 view = c.target - c.eye;
+    if (!(glm::length(view) > 0.0f)) return "camera eye and target are the same point";
+    const glm::vec3 side = glm::cross(glm::normalize(view), c.up);
+    if (!(glm::length(side) > 1e-6f * glm::length(c.up)) || !(glm::length(c.up) > 0.0f))
+        return "camera up is parallel to the view direction (or zero)";
+    return "";
+}
+
+void validate_scene(const Scene& scene) {
+    auto fail = [&](const std::string& message) { throw InputError(scene.path, 0, 0, message); };
+    if (std::string problem = settings_problem(scene.settings); !problem.empty()) fail(problem);
+    if (std::string problem = camera_problem(scene.camera); !problem.empty()) fail(problem);
+    if (triangle_count(scene) >= kNoTriangle) fail("too many triangles");
+
+    for (const Light& light : scene.lights)
+        if (!finite3(light.position) || !finite3(light.color) || !std::isfinite(light.intensity))
+            fail("light position, colour and intensity must be finite");
+    for (const SceneMesh& mesh : scene.meshes) {
+        const MeshData& m = mesh.data;
+        for (const glm::vec3& p : m.positions)
+            if (!finite3(p)) fail(mesh.source + ": vertex coordinates must be finite");
+        for (size_t t = 0; t < m.triangles.size(); ++t)
+            for (uint32_t v : m.triangles[t].v)
+                if (v >= m.positions.size())
+                    fail(mesh.source + ": triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) +
+                         " but there are only " + std::to_string(m.positions.size()));
+        if (!m.normals.empty() && m.normals.size() != m.positions.size()) fail(mesh.source + ": normals count mismatch");
+        if (!m.colors.empty() && m.colors.size() != m.positions.size()) fail(mesh.source + ": colour count mismatch");
+        if (!m.face_colors.empty() && m.face_colors.size() != m.triangles.size())
+            fail(mesh.source + ": face colour count mismatch");
+        for (int r = 0; r < 4; ++r)
+            for (int col = 0; col < 4; ++col)
+                if (!std::isfinite(mesh.model[col][r])) fail(mesh.source + ": the model transform is not finite");
+        if (!std::isfinite(mesh.material.exponent) || !finite3(mesh.material.ambient) ||
+            !finite3(mesh.material.diffuse) || !finite3(mesh.material.specular) || !finite3(mesh.material.color))
+            fail(mesh.source + ": material values must be finite");
+    }
+}
+
+}  // namespace raster

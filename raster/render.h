@@ -1,0 +1,52 @@
+// The rasterizer pipeline end to end: vertex stage -> clip -> setup -> coverage/depth -> visibility buffer ->
+// shading and resolve -> image, with timings.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "raster/image.h"
+#include "raster/scene.h"
+#include "raster/visibility_buffer.h"
+
+namespace raster {
+
+struct RenderOptions {
+    int threads = 0;  // 0 = all cores; the output is the same for any value
+    bool alpha = false;
+};
+
+// Counts and in-process timings of one frame (loading excluded).
+struct RenderStats {
+    size_t triangles = 0;        // scene triangles in
+    size_t clipped = 0;          // triangles that crossed a clip plane
+    size_t rasterized = 0;       // screen triangles after clipping, fan splitting, culling and degeneracy
+    size_t samples = 0;          // width * height * samples per pixel
+    size_t covered_samples = 0;  // samples with a visible triangle
+    double ms_vertex = 0, ms_setup = 0, ms_raster = 0, ms_shade = 0, ms_total = 0;
+};
+
+struct RenderResult {
+    VisibilityBuffer visibility;
+    Image image;
+    RenderStats stats;
+};
+
+// Bytes the frame buffers of `settings` need; render refuses frames above kMaxFrameBytes.
+inline constexpr uint64_t kMaxFrameBytes = uint64_t{4} << 30;  // 4 GiB
+uint64_t frame_bytes(const RenderSettings& settings);
+
+// Renders the scene. The scene must be valid (loaders validate; see validate_scene).
+RenderResult render(const Scene& scene, const RenderOptions& options);
+
+// Checks what every renderer relies on, whatever format the scene came from: image size and frame memory,
+// samples and pattern, camera (near > 0, far > near, fov in (0, 180), eye != target, up not parallel to the view
+// direction), snap bits, finite numbers, and triangle indices in range. Throws InputError naming scene.path.
+void validate_scene(const Scene& scene);
+
+// The checks validate_scene makes, for loaders that want to point at the offending node: an empty string when
+// fine, else what is wrong.
+std::string settings_problem(const RenderSettings& settings);
+std::string camera_problem(const Camera& camera);
+
+}  // namespace raster

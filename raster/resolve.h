@@ -1,0 +1,29 @@
+// Resolve: shades a visibility buffer (SSAA: every sample; MSAA: once per pixel per triangle) and averages the
+// samples of each pixel into an 8-bit image. Also turns view depth into a greyscale image.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "raster/image.h"
+#include "raster/shade.h"
+#include "raster/visibility_buffer.h"
+
+namespace raster {
+
+struct ResolveParams {
+    bool msaa = false;
+    glm::vec3 background{0.0f};
+    bool alpha = false;  // RGBA with alpha = covered fraction; RGB is then the mean of the covered samples only
+    int threads = 0;
+};
+
+// The colour image. Uncovered samples take the background colour (or, with alpha, no part in the colour).
+// MSAA shades each triangle in a pixel once, at the first of its samples in pattern order (always inside the
+// triangle, so no extrapolation), weighted by how many samples it covers.
+Image resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params);
+
+// Greyscale depth: per pixel the nearest covered sample's view depth, mapped linearly so that the nearest depth
+// in the image is white (255) and the farthest is 32; pixels with no coverage are black.
+Image depth_image(const VisibilityBuffer& visibility);
+
+}  // namespace raster

@@ -1,0 +1,25 @@
+// The scene formats' readers, each filling a Scene from a parsed document (internal to the loader).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+
+#include <glm/mat4x4.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "raster/scene.h"
+#include "raster/yaml_reader.h"
+
+namespace raster {
+
+// Resolves a mesh path from a scene relative to the scene file's folder and loads it (each file once per scene).
+using MeshFileLoader = std::function<const MeshData&(const YAML::Node& where, const std::string& path)>;
+
+void read_raster_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+
+// A transform chain: a list of single-key maps (translate, rotate, quaternion, scale, lookat), applied to the
+// object in the order listed, so the matrix is M = T_n * ... * T_1.
+glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader);
+
+}  // namespace raster

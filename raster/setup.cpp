@@ -1,0 +1,95 @@
+// Setup: viewport transform, snapping, winding, edge equations with the top-left bias, and the bounding box.
+#include "raster/setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "raster/conventions.h"
+
+namespace raster {
+namespace {
+
+// A polygon vertex after the divide and the viewport transform.
+struct ScreenVertex {
+    int64_t x, y;
+    float depth, inv_w;
+    glm::vec3 bary;
+};
+
+// Snaps a screen coordinate to 1/2^snap_bits of a pixel (round half away from zero), expresses it in units of
+// 1/2^fixed_bits, and clamps it to [0, extent]. The clip stage already keeps the coordinate inside the viewport
+// up to rounding, so the clamp only absorbs float error and guarantees the overflow bound of conventions.h.
+int64_t snap(double screen, int snap_bits, int fixed_bits, int64_t extent) {
+    const int64_t snapped = std::llround(screen * std::ldexp(1.0, snap_bits)) << (fixed_bits - snap_bits);
+    return std::clamp<int64_t>(snapped, 0, extent);
+}
+
+}  // namespace
+
+int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const SetupParams& params,
+                  std::vector<TriangleSetup>& out) {
+    if (polygon.count < 3) return 0;
+    const int fixed_bits = fixed_bits_for(params.snap_bits);
+    const int64_t extent_x = int64_t{params.width} << fixed_bits;
+    const int64_t extent_y = int64_t{params.height} << fixed_bits;
+
+    ScreenVertex screen[kMaxClippedVertices];
+    for (int i = 0; i < polygon.count; ++i) {
+        const glm::vec4& p = polygon.vertices[i].position;
+        const double inv_w = 1.0 / static_cast<double>(p.w);  // w >= near > 0 after clipping
+        const double sx = (static_cast<double>(p.x) * inv_w + 1.0) * 0.5 * params.width;
+        const double sy = (1.0 - static_cast<double>(p.y) * inv_w) * 0.5 * params.height;
+        screen[i] = {snap(sx, params.snap_bits, fixed_bits, extent_x), snap(sy, params.snap_bits, fixed_bits, extent_y),
+                     static_cast<float>(static_cast<double>(p.z) * inv_w), static_cast<float>(inv_w),
+                     polygon.vertices[i].bary};
+    }
+
+    int appended = 0;
+    for (int k = 1; k + 1 < polygon.count; ++k) {
+        const ScreenVertex* v[3] = {&screen[0], &screen[k], &screen[k + 1]};
+        // Twice the signed area, cross(v1 - v0, v2 - v0); > 0 is front-facing (CCW in NDC, see conventions.h).
+        int64_t area2 = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
+        if (area2 == 0) continue;  // covers no sample under the fill rule
+        if (area2 < 0) {
+            if (params.cull_backfaces) continue;
+            std::swap(v[1], v[2]);
+            area2 = -area2;
+        }
+        TriangleSetup setup;
+        setup.triangle_id = triangle_id;
+        setup.area2 = area2;
+        for (int i = 0; i < 3; ++i) {
+            setup.x[i] = v[i]->x;
+            setup.y[i] = v[i]->y;
+            setup.depth[i] = v[i]->depth;
+            setup.inv_w[i] = v[i]->inv_w;
+            setup.bary[i] = v[i]->bary;
+        }
+        for (int i = 0; i < 3; ++i) {
+            // Edge opposite vertex i runs from vertex i+1 to vertex i+2: E(P) = cross(end - start, P - start).
+            const int s = (i + 1) % 3, e = (i + 2) % 3;
+            const int64_t dx = setup.x[e] - setup.x[s], dy = setup.y[e] - setup.y[s];
+            setup.a[i] = -dy;
+            setup.b[i] = dx;
+            setup.c[i] = dy * setup.x[s] - dx * setup.y[s];
+            setup.bias[i] = is_top_left(dx, dy) ? 0 : -1;
+        }
+        const int64_t min_x = std::min({setup.x[0], setup.x[1], setup.x[2]});
+        const int64_t max_x = std::max({setup.x[0], setup.x[1], setup.x[2]});
+        const int64_t min_y = std::min({setup.y[0], setup.y[1], setup.y[2]});
+        const int64_t max_y = std::max({setup.y[0], setup.y[1], setup.y[2]});
+        // Samples sit at offsets in [0, 1) of their pixel, so pixel p can only hold a covered sample when
+        // p <= max / 2^fixed_bits and p + 1 > min / 2^fixed_bits.
+        setup.min_x = static_cast<int>(min_x >> fixed_bits);
+        setup.min_y = static_cast<int>(min_y >> fixed_bits);
+        setup.max_x = std::min(static_cast<int>(max_x >> fixed_bits), params.width - 1);
+        setup.max_y = std::min(static_cast<int>(max_y >> fixed_bits), params.height - 1);
+        if (setup.min_x > setup.max_x || setup.min_y > setup.max_y) continue;
+        out.push_back(setup);
+        ++appended;
+    }
+    return appended;
+}
+
+}  // namespace raster

@@ -1,0 +1,45 @@
+// Setup: clipped polygon -> fixed-point triangles with edge functions, fill-rule bias and a clamped bounding box.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "raster/clip.h"
+
+namespace raster {
+
+// Where setup puts things: the image size and the fixed-point precision (see conventions.h).
+struct SetupParams {
+    int width = 0;
+    int height = 0;
+    int snap_bits = 8;
+    bool cull_backfaces = false;
+};
+
+// One screen-space triangle, ready to rasterize. Coordinates are on the grid of 1/2^fixed_bits pixel.
+// Edge i is the edge opposite vertex i; E_i(X, Y) = a[i] * X + b[i] * Y + c[i] is > 0 inside, and equals
+// area2 at vertex i, so E_i / area2 is vertex i's screen-space barycentric coordinate.
+// A sample is covered when E_i + bias[i] >= 0 for all i (bias 0 on top-left edges, -1 elsewhere).
+struct TriangleSetup {
+    uint32_t triangle_id = 0;    // the original scene triangle
+    int64_t x[3] = {}, y[3] = {};  // snapped vertices, wound so that E > 0 inside
+    int64_t a[3] = {}, b[3] = {}, c[3] = {};
+    int64_t bias[3] = {};
+    int64_t area2 = 0;           // twice the snapped area, > 0
+    int min_x = 0, min_y = 0, max_x = -1, max_y = -1;  // pixel bounding box, inclusive, inside the viewport
+    float depth[3] = {};         // reversed-Z depth z/w at each vertex
+    float inv_w[3] = {};         // 1 / view depth at each vertex
+    glm::vec3 bary[3];           // each vertex's barycentric coordinates in the original triangle
+};
+
+// Projects, snaps and triangulates a clipped polygon (as a fan from its first vertex), appending one setup per
+// non-degenerate, non-culled triangle to `out`. Returns the number appended.
+int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const SetupParams& params,
+                  std::vector<TriangleSetup>& out);
+
+// True when the directed edge (dx, dy) is a top or left edge for a triangle with E > 0 inside (y down).
+inline bool is_top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
+
+}  // namespace raster
