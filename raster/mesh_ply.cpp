@@ -128,10 +128,10 @@ int clamp_int(int64_t v) { return static_cast<int>(std::min<int64_t>(v, std::num
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
-// Quotes a token for an error message: printable ASCII kept, everything else escaped, long tokens cut.
-std::string quote(std::string_view s) {
+// Makes file text safe for an error message: printable ASCII kept, everything else escaped, long text cut.
+std::string printable(std::string_view s) {
     constexpr size_t kMaxShown = 40;
-    std::string out = "'";
+    std::string out;
     for (size_t i = 0; i < s.size() && i < kMaxShown; ++i) {
         const auto c = static_cast<unsigned char>(s[i]);
         if (c >= 0x20 && c < 0x7f && c != '\'') {
@@ -144,8 +144,10 @@ std::string quote(std::string_view s) {
         }
     }
     if (s.size() > kMaxShown) out += "...";
-    return out + "'";
+    return out;
 }
+
+std::string quote(std::string_view s) { return "'" + printable(s) + "'"; }
 
 std::vector<std::string_view> split(std::string_view line) {
     std::vector<std::string_view> tokens;
@@ -440,7 +442,7 @@ public:
     void begin_instance(const Element& e, uint64_t index) {
         if (!next_nonblank_line())
             throw InputError(name_, clamp_int(next_line_no_), 0,
-                             "truncated body: file ends before " + e.name + " " + std::to_string(index) + " (0-based) of " +
+                             "truncated body: file ends before " + printable(e.name) + " " + std::to_string(index) + " (0-based) of " +
                                  std::to_string(e.count));
         element_ = &e;
         index_ = index;
@@ -450,7 +452,7 @@ public:
         skip_space();
         if (line_pos_ < line_.size()) {
             column_ = static_cast<int64_t>(line_pos_) + 1;
-            fail("extra tokens at the end of the line for " + element_->name + " " + std::to_string(index_) +
+            fail("extra tokens at the end of the line for " + printable(element_->name) + " " + std::to_string(index_) +
                  " (0-based): " + quote(line_.substr(line_pos_)));
         }
     }
@@ -501,7 +503,7 @@ private:
         skip_space();
         if (line_pos_ >= line_.size()) {
             column_ = static_cast<int64_t>(line_.size()) + 1;
-            fail("line ends early: " + element_->name + " " + std::to_string(index_) +
+            fail("line ends early: " + printable(element_->name) + " " + std::to_string(index_) +
                  " (0-based) needs more values");
         }
         const size_t start = line_pos_;
@@ -607,7 +609,7 @@ private:
     }
 
     [[noreturn]] void truncated() const {
-        fail("truncated body: file ends inside " + element_->name + " " + std::to_string(index_) + " (0-based) of " +
+        fail("truncated body: file ends inside " + printable(element_->name) + " " + std::to_string(index_) + " (0-based) of " +
              std::to_string(element_->count));
     }
 
