@@ -1,10 +1,14 @@
 // Wavefront OBJ meshes: tinyobjloader parses, this file validates and flattens its corners into MeshData.
 #include "raster/mesh_obj.h"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <sstream>
+#include <string_view>
 #include <utility>
+#include <vector>
 
 #include <tiny_obj_loader.h>
 
@@ -28,9 +32,119 @@ std::string first_line(const std::string& text) {
     return line;
 }
 
+// Statements of the OBJ specification (and tinyobjloader's vw / t); anything else is not OBJ text.
+bool known_statement(std::string_view keyword) {
+    static constexpr std::string_view kKnown[] = {
+        "v",   "vt",      "vn",    "vp",   "f",     "l",     "p",        "o",        "g",          "s",
+        "mg",  "usemtl",  "mtllib", "cstype", "deg", "bmat",  "step",     "curv",     "curv2",      "surf",
+        "parm", "trim",   "hole",  "scrv", "sp",    "end",   "con",      "call",     "csh",        "bevel",
+        "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech", "maplib", "usemap", "vw", "t"};
+    for (std::string_view known : kKnown)
+        if (keyword == known) return true;
+    return false;
+}
+
+std::vector<std::string_view> split_words(std::string_view line) {
+    std::vector<std::string_view> words;
+    size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+        const size_t start = i;
+        while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+        if (i > start) words.push_back(line.substr(start, i - start));
+    }
+    return words;
+}
+
+// tinyobjloader skips what it cannot read: unknown statements, coordinates that are not numbers (read as 0, so
+// "nan" would silently become 0), missing coordinates (read as 0: a truncated file loads) and faces of fewer than
+// 3 corners. This scan refuses all of them first, naming the line, and checks face indices as it goes.
+void check_obj_text(std::string_view text, const std::string& name) {
+    size_t positions = 0, normals = 0;
+    struct LaterIndex {
+        int line;
+        long index;
+        bool normal;
+    };
+    std::vector<LaterIndex> later;  // positive indices past what is defined so far, checked at the end
+    int line_number = 0;
+    for (size_t start = 0; start < text.size();) {
+        size_t end = text.find('\n', start);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view line = text.substr(start, end - start);
+        start = end + 1;
+        ++line_number;
+        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+        std::vector<std::string_view> words = split_words(line);
+        for (size_t k = 0; k < words.size(); ++k)
+            if (words[k][0] == '#') words.resize(k);  // a comment runs to the end of the line
+        if (words.empty()) continue;
+        auto fail = [&](const std::string& message) { throw InputError(name, line_number, 0, message); };
+        const std::string_view keyword = words[0];
+        if (!known_statement(keyword)) {
+            std::string shown(keyword.substr(0, 32));
+            for (char& c : shown)
+                if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+            fail("not an OBJ statement: '" + shown + "'");
+        }
+        if (keyword == "v" || keyword == "vn") {
+            if (words.size() < 4)
+                fail(std::string(keyword == "v" ? "a vertex" : "a normal") + " needs 3 coordinates, has " +
+                     std::to_string(words.size() - 1));
+            for (size_t k = 1; k < words.size(); ++k) {
+                const std::string word(words[k]);
+                char* parsed_end = nullptr;
+                errno = 0;
+                const double value = std::strtod(word.c_str(), &parsed_end);
+                if (parsed_end != word.c_str() + word.size()) fail("'" + word + "' is not a number");
+                if (!std::isfinite(value) || std::fabs(value) > 3.0e38) fail("'" + word + "' is not a finite number");
+            }
+            ++(keyword == "v" ? positions : normals);
+        } else if (keyword == "f") {
+            if (words.size() < 4) fail("a face needs at least 3 vertices, has " + std::to_string(words.size() - 1));
+            if (words.size() - 1 > kMaxPolygonVertices)
+                fail("a face has " + std::to_string(words.size() - 1) + " vertices, more than " +
+                     std::to_string(kMaxPolygonVertices));
+            for (size_t k = 1; k < words.size(); ++k) {
+                // v, v/vt, v//vn or v/vt/vn; texture indices are not read
+                const std::string corner(words[k]);
+                std::vector<std::string> parts(1);
+                for (char c : corner) {
+                    if (c == '/') parts.emplace_back();
+                    else parts.back() += c;
+                }
+                if (parts.size() > 3) fail("face corner '" + corner + "' has more than 3 parts");
+                for (size_t part = 0; part < parts.size(); part += 2) {
+                    if (part == 2 && parts[2].empty()) fail("face corner '" + corner + "' has an empty normal index");
+                    char* parsed_end = nullptr;
+                    errno = 0;
+                    const long index = std::strtol(parts[part].c_str(), &parsed_end, 10);
+                    if (parts[part].empty() || *parsed_end != '\0' || errno == ERANGE)
+                        fail("face corner '" + corner + "' is not a vertex index");
+                    const bool normal = part == 2;
+                    const size_t count = normal ? normals : positions;
+                    if (index == 0) fail("face corner '" + corner + "': OBJ indices start at 1");
+                    if (index < -static_cast<long>(count))
+                        fail("face corner '" + corner + "': relative index " + std::to_string(index) + " but only " +
+                             std::to_string(count) + (normal ? " normals" : " vertices") + " precede it");
+                    if (index > 0 && static_cast<size_t>(index) > count) later.push_back({line_number, index, normal});
+                }
+            }
+        }
+    }
+    for (const LaterIndex& ref : later) {
+        const size_t count = ref.normal ? normals : positions;
+        if (static_cast<size_t>(ref.index) > count)
+            throw InputError(name, ref.line, 0,
+                             std::string("face uses ") + (ref.normal ? "normal " : "vertex ") + std::to_string(ref.index) +
+                                 " but the file has " + std::to_string(count));
+    }
+}
+
 }  // namespace
 
 MeshData parse_obj(std::string_view text, const std::string& name) {
+    check_obj_text(text, name);
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;  // colours only when every vertex has them

@@ -2,6 +2,7 @@
 #include <glm/geometric.hpp>
 
 #include "raster/render.h"
+#include "raster/sample_pattern.h"
 #include "raster/scene_formats.h"
 #include "raster/transform.h"
 
@@ -80,13 +81,25 @@ void read_image(const YAML::Node& node, const YamlReader& reader, RenderSettings
 void read_camera(const YAML::Node& node, const YamlReader& reader, Camera& camera) {
     reader.expect_map(node, "camera");
     reader.check_keys(node, {"eye", "target", "up", "fov", "near", "far"});
-    if (YAML::Node v = reader.optional(node, "eye"); v.IsDefined()) camera.eye = reader.vec3(v, "camera eye");
-    if (YAML::Node v = reader.optional(node, "target"); v.IsDefined()) camera.target = reader.vec3(v, "camera target");
-    if (YAML::Node v = reader.optional(node, "up"); v.IsDefined()) camera.up = reader.vec3(v, "camera up");
-    if (YAML::Node v = reader.optional(node, "fov"); v.IsDefined()) camera.fov_y_degrees = reader.finite_float(v, "camera fov");
-    if (YAML::Node v = reader.optional(node, "near"); v.IsDefined()) camera.near = reader.finite_float(v, "camera near");
-    if (YAML::Node v = reader.optional(node, "far"); v.IsDefined()) camera.far = reader.finite_float(v, "camera far");
-    if (std::string problem = camera_problem(camera); !problem.empty()) reader.fail(node, problem);
+    const YAML::Node eye = reader.optional(node, "eye"), target = reader.optional(node, "target"),
+                     up = reader.optional(node, "up"), fov = reader.optional(node, "fov"),
+                     near = reader.optional(node, "near"), far = reader.optional(node, "far");
+    if (eye.IsDefined()) camera.eye = reader.vec3(eye, "camera eye");
+    if (target.IsDefined()) camera.target = reader.vec3(target, "camera target");
+    if (up.IsDefined()) camera.up = reader.vec3(up, "camera up");
+    if (fov.IsDefined()) camera.fov_y_degrees = reader.finite_float(fov, "camera fov");
+    if (near.IsDefined()) camera.near = reader.finite_float(near, "camera near");
+    if (far.IsDefined()) camera.far = reader.finite_float(far, "camera far");
+    if (std::string problem = camera_problem(camera); !problem.empty()) {
+        // Point at the value the problem is about, checked in camera_problem's order (the map when defaulted).
+        auto first_defined = [&](const YAML::Node& a, const YAML::Node& b) { return a.IsDefined() ? a : b.IsDefined() ? b : node; };
+        YAML::Node where = first_defined(up, eye);
+        if (!(camera.near > 0.0f)) where.reset(first_defined(near, near));
+        else if (!(camera.far > camera.near)) where.reset(first_defined(far, near));
+        else if (!(camera.fov_y_degrees > 0.0f && camera.fov_y_degrees < 180.0f)) where.reset(first_defined(fov, fov));
+        else if (camera.eye == camera.target) where.reset(first_defined(target, eye));
+        reader.fail(where, problem);
+    }
 }
 
 void read_render(const YAML::Node& node, const YamlReader& reader, RenderSettings& settings) {
@@ -112,7 +125,19 @@ void read_render(const YAML::Node& node, const YamlReader& reader, RenderSetting
         settings.snap_bits = reader.integer(v, "snap_bits", kMinSnapBits, kMaxSnapBits);
     if (YAML::Node v = reader.optional(node, "ambient"); v.IsDefined())
         settings.ambient_light = read_color(v, reader, "render ambient");
-    if (std::string problem = settings_problem(settings); !problem.empty()) reader.fail(node, problem);
+}
+
+// The image size, sample count and frame memory together, once both sections are read, at the value to change.
+void check_settings(const YAML::Node& root, const YamlReader& reader, const RenderSettings& settings) {
+    const std::string problem = settings_problem(settings);
+    if (problem.empty()) return;
+    const YAML::Node image = reader.optional(root, "image"), render = reader.optional(root, "render");
+    const YAML::Node samples = render.IsDefined() ? reader.optional(render, "samples") : render;
+    const YAML::Node pattern = render.IsDefined() ? reader.optional(render, "pattern") : render;
+    if (!sample_count_error(settings.samples, settings.pattern).empty())
+        reader.fail(samples.IsDefined() ? samples : pattern.IsDefined() ? pattern : root, problem);
+    if (samples.IsDefined() && settings.samples > 1) reader.fail(samples, problem);  // the multiplier of the frame
+    reader.fail(image.IsDefined() ? image : root, problem);
 }
 
 Light read_light(const YAML::Node& node, const YamlReader& reader) {
@@ -218,6 +243,7 @@ void read_raster_scene(const YAML::Node& root, const YamlReader& reader, const M
     reader.check_keys(root, {"image", "camera", "render", "lights", "meshes"});
     if (YAML::Node v = reader.optional(root, "image"); v.IsDefined()) read_image(v, reader, scene.settings);
     if (YAML::Node v = reader.optional(root, "render"); v.IsDefined()) read_render(v, reader, scene.settings);
+    check_settings(root, reader, scene.settings);
     if (YAML::Node v = reader.optional(root, "camera"); v.IsDefined()) read_camera(v, reader, scene.camera);
     if (YAML::Node v = reader.optional(root, "lights"); v.IsDefined()) {
         reader.expect_sequence(v, "lights");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <yaml-cpp/depthguard.h>
 
 #include "raster/errors.h"
 
@@ -72,13 +73,13 @@ void check_json_syntax(std::string_view text, const std::string& file) {
         const std::string what = e.what();
         std::smatch match;
         int line = 0, column = 0;
-        if (std::regex_search(what, match, std::regex("line ([0-9]+), column ([0-9]+)"))) {
+        std::string problem = what;
+        if (std::regex_search(what, match, std::regex("line ([0-9]+), column ([0-9]+): "))) {
             line = std::atoi(match[1].str().c_str());
             column = std::atoi(match[2].str().c_str());
+            problem = match.suffix().str();  // the location is in the message's prefix already
         }
-        const size_t colon = what.find(": ", what.find("parse error"));
-        throw InputError(file, line, column,
-                         "JSON syntax error: " + (colon == std::string::npos ? what : what.substr(colon + 2)));
+        throw InputError(file, line, column, "JSON syntax error: " + problem);
     }
 }
 
@@ -106,6 +107,9 @@ YAML::Node parse_document(std::string_view text, const std::string& file) {
         check_json_syntax(text, file);
     try {
         return YAML::Load(std::string(text));
+    } catch (const YAML::DeepRecursion& e) {  // block nesting, which check_nesting does not count
+        throw InputError(file, e.mark.line >= 0 ? e.mark.line + 1 : 0, e.mark.column >= 0 ? e.mark.column + 1 : 0,
+                         "nesting deeper than " + std::to_string(kMaxNesting) + " levels");
     } catch (const YAML::Exception& e) {
         throw InputError(file, e.mark.line >= 0 ? e.mark.line + 1 : 0, e.mark.column >= 0 ? e.mark.column + 1 : 0,
                          "YAML syntax error: " + e.msg);

@@ -382,6 +382,29 @@ TEST(PlyLoader, loadPlyErrorNamesFileForFormatErrors) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(PlyLoader, loadPlyRejectsDirectoriesAndFilesOver2GiB) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "raster_mesh_ply_test_big";
+    std::filesystem::create_directories(dir);
+    try {
+        raster::load_ply(dir);
+        ADD_FAILURE() << "no InputError thrown for a directory";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), dir.string());
+        EXPECT_TRUE(contains(e.what(), "directory"));
+    }
+    const std::filesystem::path big = dir / "big.ply";
+    { std::ofstream out(big, std::ios::binary); }
+    std::filesystem::resize_file(big, (uint64_t{1} << 31) + 1);  // sparse: nothing is written or read
+    try {
+        raster::load_ply(big);
+        ADD_FAILURE() << "no InputError thrown for a file over 2 GiB";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), big.string());
+        EXPECT_TRUE(contains(e.what(), "too large"));
+    }
+    std::filesystem::remove_all(dir);
+}
+
 TEST(PlyLoader, rejectsMissingMagic) {
     for (const std::string text : {"", "plx\nformat ascii 1.0\n", "PLY\n", "\nply\n", "format ascii 1.0\nend_header\n"}) {
         const Failure f = parse_failure(text);
