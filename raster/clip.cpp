@@ -53,7 +53,7 @@ ClippedPolygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::
     if (crossing == 0) return result;  // entirely inside: untouched
     result.clipped = true;
 
-    std::array<ClipVertex, kMaxClippedVertices> scratch{};
+    std::array<ClipVertex, kMaxClippedVertices> scratch;
     auto* input = &result.vertices;
     auto* output = &scratch;
     int count = 3;

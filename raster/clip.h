@@ -34,7 +34,7 @@ inline constexpr int kMaxClippedVertices = 16;
 struct ClippedPolygon {
     int count = 0;
     bool clipped = false;
-    std::array<ClipVertex, kMaxClippedVertices> vertices{};
+    std::array<ClipVertex, kMaxClippedVertices> vertices;  // only the first `count` are meaningful
 };
 
 // Clips a triangle. A triangle with any non-finite coordinate is rejected (count 0). Intersections are always

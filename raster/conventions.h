@@ -15,7 +15,7 @@ namespace raster {
 // PPM order). NDC (-1, +1) maps to screen (0, 0), NDC (+1, -1) to (width, height).
 //
 // Sub-pixel precision: vertices are snapped to 1/2^snap_bits of a pixel (default 8 bits, as llvmpipe's
-// FIXED_ORDER and the Vulkan Roadmap 2026 minimum), round-half-away-from-zero of x * 2^snap_bits.
+// FIXED_ORDER and the Vulkan Roadmap 2026 minimum): floor(x * 2^snap_bits + 0.5), round half up.
 // Sample positions live on a grid of 1/2^fixed_bits, fixed_bits = max(snap_bits, 4), fine enough for every
 // standard pattern (multiples of 1/16). Edge functions are evaluated exactly in 64-bit integers on that grid.
 //

@@ -16,12 +16,6 @@
 
 namespace raster {
 
-uint8_t to_byte(float value) {
-    if (!(value > 0.0f)) return 0;  // also maps NaN to 0
-    if (value >= 1.0f) return 255;
-    return static_cast<uint8_t>(std::lround(value * 255.0f));
-}
-
 ImageFormat image_format_for(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });

@@ -37,9 +37,15 @@ uint64_t frame_bytes(const RenderSettings& settings) {
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {
+    RenderResult result;
+    render_into(scene, options, result);
+    return result;
+}
+
+void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result) {
     const auto start = Clock::now();
     const RenderSettings& settings = scene.settings;
-    RenderResult result;
+    result.stats = RenderStats{};
     RenderStats& stats = result.stats;
 
     auto stage_start = Clock::now();
@@ -93,12 +99,11 @@ RenderResult render(const Scene& scene, const RenderOptions& options) {
     resolve_params.background = settings.background;
     resolve_params.alpha = options.alpha;
     resolve_params.threads = options.threads;
-    result.image = resolve_image(result.visibility, shader, resolve_params);
+    resolve_image(result.visibility, shader, resolve_params, result.image);
     stats.ms_shade = milliseconds_since(stage_start);
 
     for (uint32_t id : result.visibility.triangle) stats.covered_samples += id != kNoTriangle;
     stats.ms_total = milliseconds_since(start);
-    return result;
 }
 
 namespace {

@@ -39,6 +39,10 @@ uint64_t frame_bytes(const RenderSettings& settings);
 // Renders the scene. The scene must be valid (loaders validate; see validate_scene).
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
+// The same, reusing the buffers of a previous result (as a real-time renderer reuses its framebuffers), so a
+// sequence of frames does not pay for fresh memory each time.
+void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result);
+
 // Checks what every renderer relies on, whatever format the scene came from: image size and frame memory,
 // samples and pattern, camera (near > 0, far > near, fov in (0, 180), eye != target, up not parallel to the view
 // direction), snap bits, finite numbers, and triangle indices in range. Throws InputError naming scene.path.

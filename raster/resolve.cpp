@@ -8,16 +8,33 @@
 
 namespace raster {
 
-Image resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params) {
-    const int channels = params.alpha ? 4 : 3;
-    Image image(visibility.width, visibility.height, channels);
+void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image) {
+    image.width = visibility.width;
+    image.height = visibility.height;
+    image.channels = params.alpha ? 4 : 3;
+    image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
     const int samples = visibility.samples;
+    uint8_t background[4];
+    for (int c = 0; c < 3; ++c) background[c] = to_byte(params.background[c]);
+    background[3] = 0;
     parallel_for(static_cast<size_t>(visibility.height), params.threads, [&](size_t row) {
         const int y = static_cast<int>(row);
         for (int x = 0; x < visibility.width; ++x) {
+            uint8_t* out = image.at(x, y);
+            const size_t first = visibility.index(x, y, 0);
+            if (samples == 1) {  // the common case, without the averaging
+                const uint32_t triangle = visibility.triangle[first];
+                if (triangle == kNoTriangle) {
+                    std::copy(background, background + image.channels, out);
+                    continue;
+                }
+                const glm::vec3 color = shader.shade(triangle, visibility.bary[first]);
+                for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
+                if (params.alpha) out[3] = 255;
+                continue;
+            }
             glm::vec3 sum(0.0f);
             int covered = 0;
-            const size_t first = visibility.index(x, y, 0);
             for (int s = 0; s < samples; ++s) {
                 const uint32_t triangle = visibility.triangle[first + s];
                 if (triangle == kNoTriangle) continue;
@@ -34,15 +51,17 @@ Image resolve_image(const VisibilityBuffer& visibility, const Shader& shader, co
                 for (int later = s + 1; later < samples; ++later) count += visibility.triangle[first + later] == triangle;
                 sum += static_cast<float>(count) * shader.shade(triangle, visibility.bary[first + s]);
             }
+            if (covered == 0) {
+                std::copy(background, background + image.channels, out);
+                continue;
+            }
             glm::vec3 color;
-            if (params.alpha) color = covered > 0 ? sum / static_cast<float>(covered) : params.background;
+            if (params.alpha) color = sum / static_cast<float>(covered);
             else color = (sum + static_cast<float>(samples - covered) * params.background) / static_cast<float>(samples);
-            uint8_t* out = image.at(x, y);
             for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
             if (params.alpha) out[3] = to_byte(static_cast<float>(covered) / static_cast<float>(samples));
         }
     });
-    return image;
 }
 
 Image depth_image(const VisibilityBuffer& visibility) {

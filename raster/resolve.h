@@ -20,7 +20,8 @@ struct ResolveParams {
 // The colour image. Uncovered samples take the background colour (or, with alpha, no part in the colour).
 // MSAA shades each triangle in a pixel once, at the first of its samples in pattern order (always inside the
 // triangle, so no extrapolation), weighted by how many samples it covers.
-Image resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params);
+// `image` is resized (its storage reused when it fits) and every pixel written.
+void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image);
 
 // Greyscale depth: per pixel the nearest covered sample's view depth, mapped linearly so that the nearest depth
 // in the image is white (255) and the farthest is 32; pixels with no coverage are black.

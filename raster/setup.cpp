@@ -17,12 +17,14 @@ struct ScreenVertex {
     glm::vec3 bary;
 };
 
-// Snaps a screen coordinate to 1/2^snap_bits of a pixel (round half away from zero), expresses it in units of
-// 1/2^fixed_bits, and clamps it to [0, extent]. The clip stage already keeps the coordinate inside the viewport
-// up to rounding, so the clamp only absorbs float error and guarantees the overflow bound of conventions.h.
-int64_t snap(double screen, int snap_bits, int fixed_bits, int64_t extent) {
-    const int64_t snapped = std::llround(screen * std::ldexp(1.0, snap_bits)) << (fixed_bits - snap_bits);
-    return std::clamp<int64_t>(snapped, 0, extent);
+// Snaps a screen coordinate to 1/2^snap_bits of a pixel (round half up), expresses it in units of
+// 1/2^fixed_bits, and clamps it to [0, extent]. The clip stage already keeps the coordinate inside the viewport up
+// to rounding, so the clamp only absorbs float error and guarantees the overflow bound of conventions.h.
+inline int64_t snap(double screen, double snap_scale, int shift, int64_t extent) {
+    const double scaled = std::floor(screen * snap_scale + 0.5);
+    if (!(scaled > 0.0)) return 0;
+    const int64_t snapped = static_cast<int64_t>(std::min(scaled, 4.0e12)) << shift;  // bounded before the cast
+    return std::min(snapped, extent);
 }
 
 }  // namespace
@@ -34,13 +36,15 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Set
     const int64_t extent_x = int64_t{params.width} << fixed_bits;
     const int64_t extent_y = int64_t{params.height} << fixed_bits;
 
+    const double snap_scale = static_cast<double>(int64_t{1} << params.snap_bits);
+    const int shift = fixed_bits - params.snap_bits;
     ScreenVertex screen[kMaxClippedVertices];
     for (int i = 0; i < polygon.count; ++i) {
         const glm::vec4& p = polygon.vertices[i].position;
         const double inv_w = 1.0 / static_cast<double>(p.w);  // w >= near > 0 after clipping
         const double sx = (static_cast<double>(p.x) * inv_w + 1.0) * 0.5 * params.width;
         const double sy = (1.0 - static_cast<double>(p.y) * inv_w) * 0.5 * params.height;
-        screen[i] = {snap(sx, params.snap_bits, fixed_bits, extent_x), snap(sy, params.snap_bits, fixed_bits, extent_y),
+        screen[i] = {snap(sx, snap_scale, shift, extent_x), snap(sy, snap_scale, shift, extent_y),
                      static_cast<float>(static_cast<double>(p.z) * inv_w), static_cast<float>(inv_w),
                      polygon.vertices[i].bary};
     }

@@ -23,14 +23,17 @@ LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& norm
         if (light.attenuate) radiance /= distance_squared;
         float lobe;
         if (model == SpecularModel::blinn) {
-            const glm::vec3 half = glm::normalize(to_light + to_eye);
-            lobe = std::max(0.0f, glm::dot(normal, half));
+            const glm::vec3 half = to_light + to_eye;
+            const float half_length_squared = glm::dot(half, half);
+            lobe = half_length_squared > 0.0f ? glm::dot(normal, half) / std::sqrt(half_length_squared) : 0.0f;
         } else {
             const glm::vec3 reflected = 2.0f * n_dot_l * normal - to_light;
-            lobe = std::max(0.0f, glm::dot(reflected, to_eye));
+            lobe = glm::dot(reflected, to_eye);
         }
         terms.diffuse += radiance * material.diffuse * n_dot_l;
-        terms.specular += radiance * material.specular * std::pow(lobe, material.exponent);
+        // lobe^exponent with max(0, lobe); pow is skipped where it is 0 (and 0^0 = 1 kept for exponent 0).
+        const float highlight = lobe > 0.0f ? std::pow(lobe, material.exponent) : (material.exponent == 0.0f ? 1.0f : 0.0f);
+        terms.specular += radiance * material.specular * highlight;
     }
     return terms;
 }

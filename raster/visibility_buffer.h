@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "raster/conventions.h"
+#include "raster/plane_allocator.h"
 
 namespace raster {
 
@@ -17,18 +18,21 @@ struct VisibilityBuffer {
     int width = 0;
     int height = 0;
     int samples = 0;
-    std::vector<uint32_t> triangle;    // scene triangle id, or kNoTriangle
-    std::vector<glm::vec3> bary;       // perspective-correct barycentrics w.r.t. the original triangle's vertices
-    std::vector<float> view_depth;     // distance along the view direction (-z in view space); 0 when empty
+    Plane<uint32_t> triangle;    // scene triangle id, or kNoTriangle
+    Plane<glm::vec3> bary;       // perspective-correct barycentrics w.r.t. the original triangle's vertices
+    Plane<float> view_depth;     // distance along the view direction (-z in view space); 0 when empty
 
+    // Sizes the planes for w x h pixels of s samples and marks every sample empty. Storage is reused when it fits.
+    // Only `triangle` is cleared here; whoever fills the buffer writes bary and view_depth of every sample
+    // (zero for empty ones), so a frame costs one pass over them, not two.
     void resize(int w, int h, int s) {
         width = w;
         height = h;
         samples = s;
         const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h) * static_cast<size_t>(s);
         triangle.assign(n, kNoTriangle);
-        bary.assign(n, glm::vec3(0.0f));
-        view_depth.assign(n, 0.0f);
+        bary.resize(n);
+        view_depth.resize(n);
     }
     size_t index(int x, int y, int s) const {
         return (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) *
