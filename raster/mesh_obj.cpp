@@ -75,10 +75,8 @@ void check_obj_text(std::string_view text, const std::string& name) {
         start = end + 1;
         ++line_number;
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        std::vector<std::string_view> words = split_words(line);
-        for (size_t k = 0; k < words.size(); ++k)
-            if (words[k][0] == '#') words.resize(k);  // a comment runs to the end of the line
-        if (words.empty()) continue;
+        const std::vector<std::string_view> words = split_words(line);
+        if (words.empty() || words[0][0] == '#') continue;
         auto fail = [&](const std::string& message) { throw InputError(name, line_number, 0, message); };
         const std::string_view keyword = words[0];
         if (!known_statement(keyword)) {

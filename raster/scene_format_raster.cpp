@@ -190,24 +190,25 @@ MeshData read_inline_mesh(const YAML::Node& node, const YamlReader& reader) {
         for (size_t k = 1; k + 1 < corners.size(); ++k) mesh.triangles.push_back({{corners[0], corners[k], corners[k + 1]}});
         if (mesh.triangles.size() > kMaxMeshTriangles) reader.fail(face, "too many triangles");
     }
-    auto per_vertex = [&](const char* key, std::vector<glm::vec3>& out) {
+    // Colours may be a single number for grey (README "Scene format"); normals may not.
+    auto per_vertex = [&](const char* key, std::vector<glm::vec3>& out, bool grey_ok) {
         const YAML::Node list = reader.optional(node, key);
         if (!list.IsDefined()) return;
         reader.expect_sequence(list, key);
         if (list.size() != mesh.positions.size())
             reader.fail(list, std::string(key) + " must have one entry per vertex (" +
                                   std::to_string(mesh.positions.size()) + "), has " + std::to_string(list.size()));
-        for (const YAML::Node& v : list) out.push_back(reader.vec3(v, key));
+        for (const YAML::Node& v : list) out.push_back(reader.vec3(v, key, grey_ok));
     };
-    per_vertex("normals", mesh.normals);
-    per_vertex("vertex_colors", mesh.colors);
+    per_vertex("normals", mesh.normals, false);
+    per_vertex("vertex_colors", mesh.colors, true);
     if (const YAML::Node list = reader.optional(node, "face_colors"); list.IsDefined()) {
         reader.expect_sequence(list, "face_colors");
         if (list.size() != faces.size())
             reader.fail(list, "face_colors must have one entry per face (" + std::to_string(faces.size()) + "), has " +
                                   std::to_string(list.size()));
         for (size_t face = 0; face < faces.size(); ++face) {
-            const glm::vec3 color = reader.vec3(list[face], "a face colour");
+            const glm::vec3 color = read_color(list[face], reader, "a face colour");
             const size_t end = face + 1 < faces.size() ? face_first_triangle[face + 1] : mesh.triangles.size();
             for (size_t t = face_first_triangle[face]; t < end; ++t) mesh.face_colors.push_back(color);
         }

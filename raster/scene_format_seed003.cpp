@@ -18,10 +18,12 @@ void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const 
     settings.shading = ShadingMode::blinn_phong;  // the document's Phong shading: per-fragment Blinn-Phong
 
     Camera& camera = scene.camera;
-    camera.eye = reader.vec3(reader.required(root, "eye"), "eye");
-    camera.target = reader.vec3(reader.required(root, "lookat"), "lookat");
-    camera.up = reader.vec3(reader.required(root, "up"), "up");
-    camera.fov_y_degrees = reader.finite_float(reader.required(root, "fov_angle"), "fov_angle");
+    const YAML::Node eye = reader.required(root, "eye"), lookat = reader.required(root, "lookat"),
+                     up = reader.required(root, "up"), fov = reader.required(root, "fov_angle");
+    camera.eye = reader.vec3(eye, "eye");
+    camera.target = reader.vec3(lookat, "lookat");
+    camera.up = reader.vec3(up, "up");
+    camera.fov_y_degrees = reader.finite_float(fov, "fov_angle");
     const YAML::Node near = reader.required(root, "near"), far = reader.required(root, "far");
     camera.near = reader.finite_float(near, "near");
     camera.far = reader.finite_float(far, "far");
@@ -33,7 +35,15 @@ void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const 
     } else if ((camera.near < 0.0f) != (camera.far < 0.0f)) {
         reader.fail(near, "near and far must both be negative z values (the book's convention) or both distances");
     }
-    if (std::string problem = camera_problem(camera); !problem.empty()) reader.fail(root, problem);
+    if (std::string problem = camera_problem(camera); !problem.empty()) {
+        // Point at the value the problem is about, checked in camera_problem's order.
+        YAML::Node where = up;
+        if (!(camera.near > 0.0f)) where.reset(near);
+        else if (!(camera.far > camera.near)) where.reset(far);
+        else if (!(camera.fov_y_degrees > 0.0f && camera.fov_y_degrees < 180.0f)) where.reset(fov);
+        else if (camera.eye == camera.target) where.reset(lookat);
+        reader.fail(where, problem);
+    }
 
     if (const YAML::Node lights = reader.optional(root, "lights"); lights.IsDefined()) {
         reader.expect_sequence(lights, "lights");
