@@ -537,7 +537,8 @@ int run(const Options& opt) {
     std::string members;
     for (std::size_t p = 0; p < npatch; ++p)
       if (component[p] == c) {
-        members += " " + std::to_string(p);
+        members += ' ';  // (not " " + to_string: GCC 12 warns falsely on that, -Wrestrict)
+        members += std::to_string(p);
         if (invert) flip[p] ^= 1;
       }
     std::cerr << "surface " << c << " (patches" << members << "): capped volume " << std::fabs(vol)
@@ -549,7 +550,8 @@ int run(const Options& opt) {
   for (std::size_t p = 0; p < npatch; ++p)
     if (flip[p]) {
       ++nflipped;
-      flipped += " " + std::to_string(p);
+      flipped += ' ';
+      flipped += std::to_string(p);
     }
   std::cerr << "patches reversed from their natural (u,v) order: " << nflipped << " of " << npatch
             << (nflipped ? ":" + flipped : std::string()) << "\n";
