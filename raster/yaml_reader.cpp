@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <regex>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -71,14 +71,14 @@ void check_json_syntax(std::string_view text, const std::string& file) {
         nlohmann::json::sax_parse(text.begin(), text.end(), &sax);
     } catch (const nlohmann::json::parse_error& e) {
         const std::string what = e.what();
-        std::smatch match;
         int line = 0, column = 0;
         std::string problem = what;
-        if (std::regex_search(what, match, std::regex("line ([0-9]+), column ([0-9]+): "))) {
-            line = std::atoi(match[1].str().c_str());
-            column = std::atoi(match[2].str().c_str());
-            problem = match.suffix().str();  // the location is in the message's prefix already
-        }
+        // "... parse error at line 3, column 5: <problem>": the location goes into InputError, the rest is the problem.
+        const size_t at = what.find("line ");
+        int consumed = 0;
+        if (at != std::string::npos &&
+            std::sscanf(what.c_str() + at, "line %d, column %d: %n", &line, &column, &consumed) == 2 && consumed > 0)
+            problem = what.substr(at + static_cast<size_t>(consumed));
         throw InputError(file, line, column, "JSON syntax error: " + problem);
     }
 }
