@@ -1,17 +1,12 @@
 // The `raster` command line: parses flags with CLI11, runs the subcommand, maps failures to exit codes.
 #include "apps/cli.h"
 
-#include <filesystem>
-#include <optional>
+#include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
+#include "apps/command.h"
 #include "raster/errors.h"
-#include "raster/image.h"
-#include "raster/render.h"
-#include "raster/resolve.h"
-#include "raster/scene_loader.h"
 
 namespace raster::cli {
 namespace {
@@ -20,110 +15,14 @@ constexpr const char* kDescription =
     "raster: a CPU triangle rasterizer with a verification framework around it.\n"
     "Exit codes: 0 success, 1 a check failed, 2 bad usage or input (nothing written), 3 an output could not be written.";
 
-// Flags of `raster render`, each overriding the scene's own setting when given.
-struct RenderFlags {
-    std::string scene;
-    std::string output;
-    std::optional<int> samples;
-    std::optional<std::string> pattern;
-    bool msaa = false;
-    std::optional<std::string> shading;
-    std::optional<int> snap_bits;
-    std::optional<std::string> cull;
-    bool alpha = false;
-    std::string depth_out;
-    int threads = 0;
-    bool stats = false;
-};
-
-void add_render_command(CLI::App& app, RenderFlags& flags) {
-    CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG or PPM image.");
-    render->footer(
-        "SCENE is a raster YAML scene or a seed 003 JSON scene (told apart by content; see README).\n"
-        "Flags override the scene's settings. Example: raster render corpus/scenes/teapot.yaml -o teapot.png --samples 4");
-    render->add_option("scene", flags.scene, "Scene file")->required();
-    render->add_option("-o,--output", flags.output,
-                       "Output image; .ppm writes binary PPM, anything else PNG (default: SCENE's stem + .png in the "
-                       "current directory)");
-    render->add_option("--samples", flags.samples, "Samples per pixel: 1, 2, 4, 8, 16 (standard) or N*N (grid)");
-    render->add_option("--pattern", flags.pattern, "Sample pattern: standard (Vulkan positions) or grid (N x N)")
-        ->check(CLI::IsMember({"standard", "grid"}));
-    render->add_flag("--msaa", flags.msaa, "Shade once per pixel per triangle (MSAA) instead of every sample (SSAA)");
-    render->add_option("--shading", flags.shading, "Shading: unlit, flat, gouraud, phong or blinn-phong")
-        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "phong", "blinn-phong"}));
-    render->add_option("--snap-bits", flags.snap_bits, "Sub-pixel bits for vertex snapping, 1..16 (default 8)");
-    render->add_option("--cull", flags.cull, "Back-face culling: none or back")->check(CLI::IsMember({"none", "back"}));
-    render->add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
-    render->add_option("--depth-out", flags.depth_out,
-                       "Also write a greyscale depth image (nearest white, farthest dark grey, empty black)");
-    render->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (the image is the same for any count)")
-        ->check(CLI::Range(0, 256));
-    render->add_flag("--stats", flags.stats,
-                     "Print one JSON line of counts and in-process timings (loading excluded) on stdout");
-}
-
-void apply_overrides(const RenderFlags& flags, Scene& scene) {
-    RenderSettings& settings = scene.settings;
-    if (flags.samples) settings.samples = *flags.samples;
-    if (flags.pattern) parse_sample_pattern(*flags.pattern, settings.pattern);
-    if (flags.msaa) settings.msaa = true;
-    if (flags.shading) parse_shading_mode(*flags.shading, settings.shading);
-    if (flags.snap_bits) settings.snap_bits = *flags.snap_bits;
-    if (flags.cull) settings.cull_backfaces = *flags.cull == "back";
-    if (std::string problem = settings_problem(settings); !problem.empty()) throw InputError("", 0, 0, problem);
-}
-
-nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
-    return {{"scene", scene.path},
-            {"width", scene.settings.width},
-            {"height", scene.settings.height},
-            {"samples_per_pixel", scene.settings.samples},
-            {"shading", to_string(scene.settings.shading)},
-            {"triangles", stats.triangles},
-            {"clipped", stats.clipped},
-            {"rasterized", stats.rasterized},
-            {"samples", stats.samples},
-            {"covered_samples", stats.covered_samples},
-            {"ms_vertex", stats.ms_vertex},
-            {"ms_setup", stats.ms_setup},
-            {"ms_raster", stats.ms_raster},
-            {"ms_shade", stats.ms_shade},
-            {"ms_total", stats.ms_total}};
-}
-
-int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
-    Scene scene;
-    try {
-        scene = load_scene(flags.scene);
-        apply_overrides(flags, scene);
-    } catch (const InputError& error) {
-        err << "raster render: error: " << error.what() << "\n";
-        return kExitBadInput;
-    }
-    const std::filesystem::path output =
-        flags.output.empty() ? std::filesystem::path(flags.scene).stem().string() + ".png" : flags.output;
-    RenderOptions options;
-    options.threads = flags.threads;
-    options.alpha = flags.alpha;
-    const RenderResult result = render(scene, options);
-    try {
-        write_image(output, result.image);
-        if (!flags.depth_out.empty()) write_image(flags.depth_out, depth_image(result.visibility));
-    } catch (const std::exception& error) {
-        err << "raster render: error: " << error.what() << "\n";
-        return kExitIoError;
-    }
-    if (flags.stats) out << stats_json(scene, result.stats).dump() << "\n";
-    return kExitOk;
-}
-
 }  // namespace
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     CLI::App app(kDescription, "raster");
     app.require_subcommand(1);
-    RenderFlags render_flags;
-    add_render_command(app, render_flags);
+    const std::vector<Command> commands = {
+        add_render_command(app),
+    };
 
     std::vector<std::string> reversed(args.rbegin(), args.rend());
     if (!reversed.empty()) reversed.pop_back();  // program name
@@ -142,7 +41,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         return kExitBadInput;
     }
     try {
-        if (app.got_subcommand("render")) return run_render(render_flags, out, err);
+        for (const Command& command : commands)
+            if (command.app->parsed()) return command.action(out, err);
     } catch (const InputError& error) {
         err << "raster: error: " << error.what() << "\n";
         return kExitBadInput;

@@ -36,20 +36,20 @@ uint64_t frame_bytes(const RenderSettings& settings) {
     return pixels * uint64_t(std::max(settings.samples, 0)) * 28u + pixels * 4u;
 }
 
-RenderResult render(const Scene& scene, const RenderOptions& options) {
+RenderResult render(const Scene& scene, const RenderOptions& options, const PipelineStages& stages) {
     RenderResult result;
-    render_into(scene, options, result);
+    render_into(scene, options, result, stages);
     return result;
 }
 
-void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result) {
+void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result, const PipelineStages& stages) {
     const auto start = Clock::now();
     const RenderSettings& settings = scene.settings;
     result.stats = RenderStats{};
     RenderStats& stats = result.stats;
 
     auto stage_start = Clock::now();
-    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(settings.shading));
+    const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(settings.shading));
     stats.triangles = geometry.triangles.size();
     stats.ms_vertex = milliseconds_since(stage_start);
 
@@ -68,9 +68,9 @@ void render_into(const Scene& scene, const RenderOptions& options, RenderResult&
         for (size_t tri = begin; tri < end; ++tri) {
             const TriangleIndices& v = geometry.triangles[tri];
             const ClippedPolygon polygon =
-                clip_triangle(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]], volume);
+                stages.clip(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]], volume);
             chunk_clipped[chunk] += polygon.clipped;
-            setup_polygon(polygon, static_cast<uint32_t>(tri), setup_params, out);
+            stages.setup(polygon, static_cast<uint32_t>(tri), setup_params, out);
         }
     });
     std::vector<TriangleSetup> setups;
@@ -86,14 +86,14 @@ void render_into(const Scene& scene, const RenderOptions& options, RenderResult&
     raster_params.width = settings.width;
     raster_params.height = settings.height;
     raster_params.snap_bits = settings.snap_bits;
-    raster_params.sample_offsets = sample_offsets(settings.samples, settings.pattern);
+    raster_params.sample_offsets = stages.sample_offsets(settings.samples, settings.pattern);
     raster_params.threads = options.threads;
-    rasterize(setups, raster_params, result.visibility);
+    stages.rasterize(setups, raster_params, result.visibility);
     stats.samples = result.visibility.size();
     stats.ms_raster = milliseconds_since(stage_start);
 
     stage_start = Clock::now();
-    const Shader shader(scene, geometry);
+    const Shader shader(scene, geometry, stages.lighting);
     ResolveParams resolve_params;
     resolve_params.msaa = settings.msaa;
     resolve_params.background = settings.background;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "raster/image.h"
+#include "raster/pipeline.h"
 #include "raster/scene.h"
 #include "raster/visibility_buffer.h"
 
@@ -37,11 +38,12 @@ inline constexpr uint64_t kMaxFrameBytes = uint64_t{4} << 30;  // 4 GiB
 uint64_t frame_bytes(const RenderSettings& settings);
 
 // Renders the scene. The scene must be valid (loaders validate; see validate_scene).
-RenderResult render(const Scene& scene, const RenderOptions& options);
+RenderResult render(const Scene& scene, const RenderOptions& options, const PipelineStages& stages = {});
 
 // The same, reusing the buffers of a previous result (as a real-time renderer reuses its framebuffers), so a
 // sequence of frames does not pay for fresh memory each time.
-void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result);
+void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result,
+                 const PipelineStages& stages = {});
 
 // Checks what every renderer relies on, whatever format the scene came from: image size and frame memory,
 // samples and pattern, camera (near > 0, far > near, fov in (0, 180), eye != target, up not parallel to the view

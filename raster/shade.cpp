@@ -47,8 +47,8 @@ glm::vec3 unit_or_zero(const glm::vec3& v) {
 
 }  // namespace
 
-Shader::Shader(const Scene& scene, const TransformedScene& geometry)
-    : scene_(scene), geometry_(geometry), mode_(scene.settings.shading) {
+Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting)
+    : scene_(scene), geometry_(geometry), mode_(scene.settings.shading), lighting_(lighting) {
     if (mode_ == ShadingMode::gouraud) {
         vertex_terms_.resize(geometry.clip.size());
         for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
@@ -56,7 +56,7 @@ Shader::Shader(const Scene& scene, const TransformedScene& geometry)
             const size_t count = scene.meshes[mesh].data.positions.size();
             for (size_t i = first; i < first + count; ++i) {
                 const glm::vec3& p = geometry.world_position[i];
-                vertex_terms_[i] = evaluate_lighting(p, geometry.world_normal[i], unit_or_zero(scene.camera.eye - p),
+                vertex_terms_[i] = lighting_(p, geometry.world_normal[i], unit_or_zero(scene.camera.eye - p),
                                                      scene.meshes[mesh].material, scene.lights,
                                                      scene.settings.ambient_light, SpecularModel::blinn);
             }
@@ -72,7 +72,7 @@ Shader::Shader(const Scene& scene, const TransformedScene& geometry)
             const glm::vec3 centroid = (a + b + c) / 3.0f;
             const glm::vec3 normal = unit_or_zero(glm::cross(b - a, c - a));
             const LightingTerms terms =
-                evaluate_lighting(centroid, normal, unit_or_zero(scene.camera.eye - centroid),
+                lighting_(centroid, normal, unit_or_zero(scene.camera.eye - centroid),
                                   scene.meshes[geometry.triangle_mesh[tri]].material, scene.lights,
                                   scene.settings.ambient_light, SpecularModel::blinn);
             face_color_[tri] = base_color(tri, centroid_bary) * terms.diffuse + terms.specular;
@@ -119,7 +119,7 @@ glm::vec3 Shader::shade(uint32_t triangle, const glm::vec3& bary) const {
                 position += bary[i] * geometry_.world_position[v.v[i]];
                 normal += bary[i] * geometry_.world_normal[v.v[i]];
             }
-            const LightingTerms terms = evaluate_lighting(
+            const LightingTerms terms = lighting_(
                 position, unit_or_zero(normal), unit_or_zero(scene_.camera.eye - position),
                 scene_.meshes[geometry_.triangle_mesh[triangle]].material, scene_.lights,
                 scene_.settings.ambient_light,

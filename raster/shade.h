@@ -28,12 +28,16 @@ LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& norm
                                 const Material& material, const std::vector<Light>& lights,
                                 const glm::vec3& ambient_light, SpecularModel model);
 
+// The signature of evaluate_lighting, so a pipeline can be given another lighting model.
+using LightingFunction = LightingTerms (*)(const glm::vec3&, const glm::vec3&, const glm::vec3&, const Material&,
+                                           const std::vector<Light>&, const glm::vec3&, SpecularModel);
+
 // Everything shading needs, prepared once per frame for the scene's shading mode: per-vertex lit terms for
 // Gouraud, per-face colours for flat, nothing extra for unlit. Holds pointers into `scene` and `geometry`,
 // which must outlive it.
 class Shader {
 public:
-    Shader(const Scene& scene, const TransformedScene& geometry);
+    Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting = evaluate_lighting);
 
     // Linear RGB of triangle `triangle` at barycentrics `bary` (w.r.t. its original vertices), unclamped.
     glm::vec3 shade(uint32_t triangle, const glm::vec3& bary) const;
@@ -44,6 +48,7 @@ private:
     const Scene& scene_;
     const TransformedScene& geometry_;
     ShadingMode mode_;
+    LightingFunction lighting_;
     std::vector<LightingTerms> vertex_terms_;  // gouraud only: per global vertex
     std::vector<glm::vec3> face_color_;        // flat only: per triangle, final colour
 };

@@ -1,0 +1,24 @@
+// One subcommand of `raster`: each registers its flags on the CLI11 app and hands back what to run when chosen.
+#pragma once
+
+#include <functional>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/cli.h"
+
+namespace raster::cli {
+
+// What a subcommand does once its flags are parsed; returns the process exit code (see cli.h).
+using CommandAction = std::function<int(std::ostream& out, std::ostream& err)>;
+
+struct Command {
+    CLI::App* app;  // the subcommand, owned by the parent app
+    CommandAction action;
+};
+
+// One function per subcommand, each in apps/cmd_<name>.cpp.
+Command add_render_command(CLI::App& app);
+
+}  // namespace raster::cli
