@@ -47,9 +47,15 @@ void average_face_normals(const std::vector<glm::vec3>& world, const std::vector
 }  // namespace
 
 TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& needs) {
+    return run_vertex_stage(scene, needs, view_matrix(scene.camera),
+                            projection_matrix(scene.camera, scene.settings.width, scene.settings.height));
+}
+
+TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& needs, const glm::mat4& view,
+                                  const glm::mat4& projection) {
     TransformedScene out;
-    out.view = view_matrix(scene.camera);
-    out.projection = projection_matrix(scene.camera, scene.settings.width, scene.settings.height);
+    out.view = view;
+    out.projection = projection;
     const glm::mat4 view_projection = out.projection * out.view;
 
     size_t vertex_total = 0, triangle_total = 0;

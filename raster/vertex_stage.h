@@ -43,4 +43,8 @@ glm::mat4 projection_matrix(const Camera& camera, int width, int height);
 // or, when the mesh has none, from averaging the unit normals of the adjacent faces in world space.
 TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& needs);
 
+// The same with explicit view and projection matrices (the camera's are view_matrix and projection_matrix).
+TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& needs, const glm::mat4& view,
+                                  const glm::mat4& projection);
+
 }  // namespace raster
