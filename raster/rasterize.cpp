@@ -22,19 +22,6 @@ struct DepthPlanes {
     float* depth;
 };
 
-// Per-triangle constants of the depth test: d = d0 + (E1 (d1 - d0) + E2 (d2 - d0)) / area2.
-struct DepthPlane {
-    double d0, d10_over_area, d20_over_area;
-    explicit DepthPlane(const TriangleSetup& t)
-        : d0(t.depth[0]),
-          d10_over_area((double(t.depth[1]) - d0) / double(t.area2)),
-          d20_over_area((double(t.depth[2]) - d0) / double(t.area2)) {}
-    // e1 and e2 are the exact edge values (bias removed).
-    float at(int64_t e1, int64_t e2) const {
-        return static_cast<float>(d0 + static_cast<double>(e1) * d10_over_area + static_cast<double>(e2) * d20_over_area);
-    }
-};
-
 inline void depth_test(DepthPlanes& planes, size_t at, float depth, uint32_t index) {
     if (planes.winner[at] == kNoTriangle || depth > planes.depth[at]) {
         planes.depth[at] = depth;
@@ -89,9 +76,7 @@ void rasterize_band(const std::vector<TriangleSetup>& triangles, int row_begin, 
     }
 }
 
-// Turns the winning setup of each sample in rows [row_begin, row_end) into the visibility buffer entry:
-// screen-space barycentrics l_i = E_i / area2, perspective-corrected by 1/w (m_i = l_i / w_i, normalised), then
-// mapped through the setup vertices' barycentrics in the original triangle; view depth = 1 / sum(l_i / w_i).
+// Turns the winning setup of each sample in rows [row_begin, row_end) into the visibility buffer entry.
 void resolve_band(const std::vector<TriangleSetup>& triangles, int row_begin, int row_end, int fixed_bits,
                   const FixedSampleOffsets& offsets, VisibilityBuffer& out) {
     const int samples = out.samples;
@@ -106,20 +91,11 @@ void resolve_band(const std::vector<TriangleSetup>& triangles, int row_begin, in
                     continue;
                 }
                 const TriangleSetup& t = triangles[winner];
-                const int64_t X = (int64_t{px} << fixed_bits) + offsets.x[s];
-                const int64_t Y = (int64_t{py} << fixed_bits) + offsets.y[s];
-                const double inv_area = 1.0 / static_cast<double>(t.area2);
-                double weight[3], total = 0.0;
-                for (int i = 0; i < 3; ++i) {
-                    const double l = static_cast<double>(t.a[i] * X + t.b[i] * Y + t.c[i]) * inv_area;
-                    weight[i] = l * static_cast<double>(t.inv_w[i]);
-                    total += weight[i];
-                }
-                glm::dvec3 bary(0.0);
-                for (int i = 0; i < 3; ++i) bary += (weight[i] / total) * glm::dvec3(t.bary[i]);
+                const SampleHit hit = perspective_correct_hit(t, (int64_t{px} << fixed_bits) + offsets.x[s],
+                                                              (int64_t{py} << fixed_bits) + offsets.y[s]);
                 out.triangle[at] = t.triangle_id;
-                out.bary[at] = glm::vec3(bary);
-                out.view_depth[at] = static_cast<float>(1.0 / total);
+                out.bary[at] = hit.bary;
+                out.view_depth[at] = hit.view_depth;
             }
         }
     }

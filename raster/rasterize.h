@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "raster/setup.h"
 #include "raster/visibility_buffer.h"
@@ -23,6 +24,41 @@ struct RasterParams {
 // perspective-correct barycentrics in the original triangle and its view depth. The result is the same for any
 // thread count: rows are split into bands and each band is processed by one thread, triangles in order.
 void rasterize(const std::vector<TriangleSetup>& triangles, const RasterParams& params, VisibilityBuffer& out);
+
+// Reversed-Z depth of a covered sample, affine in screen space: d = d0 + (E1 (d1 - d0) + E2 (d2 - d0)) / area2,
+// evaluated in double from the exact edge values so that every path (reference, tiled) gets the same float.
+struct DepthPlane {
+    double d0, d10_over_area, d20_over_area;
+    explicit DepthPlane(const TriangleSetup& t)
+        : d0(t.depth[0]),
+          d10_over_area((double(t.depth[1]) - d0) / double(t.area2)),
+          d20_over_area((double(t.depth[2]) - d0) / double(t.area2)) {}
+    // e1 and e2 are the exact edge values at the sample (bias removed).
+    float at(int64_t e1, int64_t e2) const {
+        return static_cast<float>(d0 + static_cast<double>(e1) * d10_over_area + static_cast<double>(e2) * d20_over_area);
+    }
+};
+
+// Where a visible sample is on its original triangle: perspective-correct barycentrics and view depth.
+struct SampleHit {
+    glm::vec3 bary;
+    float view_depth;
+};
+
+// Screen-space barycentrics l_i = E_i / area2, perspective-corrected by 1/w (m_i = l_i / w_i, normalised), then
+// mapped through the setup vertices' barycentrics in the original triangle; view depth = 1 / sum(l_i / w_i).
+inline SampleHit perspective_correct_hit(const TriangleSetup& t, int64_t X, int64_t Y) {
+    const double inv_area = 1.0 / static_cast<double>(t.area2);
+    double weight[3], total = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const double l = static_cast<double>(t.a[i] * X + t.b[i] * Y + t.c[i]) * inv_area;
+        weight[i] = l * static_cast<double>(t.inv_w[i]);
+        total += weight[i];
+    }
+    glm::dvec3 bary(0.0);
+    for (int i = 0; i < 3; ++i) bary += (weight[i] / total) * glm::dvec3(t.bary[i]);
+    return {glm::vec3(bary), static_cast<float>(1.0 / total)};
+}
 
 // The exact coverage test of one sample at fixed-point position (X, Y), shared by the rasterizer and its tests.
 inline bool covers(const TriangleSetup& t, int64_t X, int64_t Y) {

@@ -8,58 +8,62 @@
 
 namespace raster {
 
+PixelResolver::PixelResolver(const Shader& shader, const ResolveParams& params, int samples)
+    : shader_(shader), params_(params), samples_(samples) {
+    for (int c = 0; c < 3; ++c) background_[c] = to_byte(params.background[c]);
+    background_[3] = 0;
+}
+
+void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const {
+    if (samples_ == 1) {  // the common case, without the averaging
+        if (triangle[0] == kNoTriangle) {
+            std::copy(background_, background_ + channels(), out);
+            return;
+        }
+        const glm::vec3 color = shader_.shade(triangle[0], bary[0]);
+        for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
+        if (params_.alpha) out[3] = 255;
+        return;
+    }
+    glm::vec3 sum(0.0f);
+    int covered = 0;
+    for (int s = 0; s < samples_; ++s) {
+        if (triangle[s] == kNoTriangle) continue;
+        ++covered;
+        if (!params_.msaa) {
+            sum += shader_.shade(triangle[s], bary[s]);
+            continue;
+        }
+        // MSAA: only the first sample of each triangle shades, for all of that triangle's samples.
+        bool seen = false;
+        for (int earlier = 0; earlier < s && !seen; ++earlier) seen = triangle[earlier] == triangle[s];
+        if (seen) continue;
+        int count = 1;
+        for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
+        sum += static_cast<float>(count) * shader_.shade(triangle[s], bary[s]);
+    }
+    if (covered == 0) {
+        std::copy(background_, background_ + channels(), out);
+        return;
+    }
+    glm::vec3 color;
+    if (params_.alpha) color = sum / static_cast<float>(covered);
+    else color = (sum + static_cast<float>(samples_ - covered) * params_.background) / static_cast<float>(samples_);
+    for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
+    if (params_.alpha) out[3] = to_byte(static_cast<float>(covered) / static_cast<float>(samples_));
+}
+
 void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image) {
+    const PixelResolver resolver(shader, params, visibility.samples);
     image.width = visibility.width;
     image.height = visibility.height;
-    image.channels = params.alpha ? 4 : 3;
+    image.channels = resolver.channels();
     image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
-    const int samples = visibility.samples;
-    uint8_t background[4];
-    for (int c = 0; c < 3; ++c) background[c] = to_byte(params.background[c]);
-    background[3] = 0;
     parallel_for(static_cast<size_t>(visibility.height), params.threads, [&](size_t row) {
         const int y = static_cast<int>(row);
         for (int x = 0; x < visibility.width; ++x) {
-            uint8_t* out = image.at(x, y);
             const size_t first = visibility.index(x, y, 0);
-            if (samples == 1) {  // the common case, without the averaging
-                const uint32_t triangle = visibility.triangle[first];
-                if (triangle == kNoTriangle) {
-                    std::copy(background, background + image.channels, out);
-                    continue;
-                }
-                const glm::vec3 color = shader.shade(triangle, visibility.bary[first]);
-                for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
-                if (params.alpha) out[3] = 255;
-                continue;
-            }
-            glm::vec3 sum(0.0f);
-            int covered = 0;
-            for (int s = 0; s < samples; ++s) {
-                const uint32_t triangle = visibility.triangle[first + s];
-                if (triangle == kNoTriangle) continue;
-                ++covered;
-                if (!params.msaa) {
-                    sum += shader.shade(triangle, visibility.bary[first + s]);
-                    continue;
-                }
-                // MSAA: only the first sample of each triangle shades, for all of that triangle's samples.
-                bool seen = false;
-                for (int earlier = 0; earlier < s && !seen; ++earlier) seen = visibility.triangle[first + earlier] == triangle;
-                if (seen) continue;
-                int count = 1;
-                for (int later = s + 1; later < samples; ++later) count += visibility.triangle[first + later] == triangle;
-                sum += static_cast<float>(count) * shader.shade(triangle, visibility.bary[first + s]);
-            }
-            if (covered == 0) {
-                std::copy(background, background + image.channels, out);
-                continue;
-            }
-            glm::vec3 color;
-            if (params.alpha) color = sum / static_cast<float>(covered);
-            else color = (sum + static_cast<float>(samples - covered) * params.background) / static_cast<float>(samples);
-            for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
-            if (params.alpha) out[3] = to_byte(static_cast<float>(covered) / static_cast<float>(samples));
+            resolver.resolve(&visibility.triangle[first], &visibility.bary[first], image.at(x, y));
         }
     });
 }

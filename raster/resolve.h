@@ -17,6 +17,21 @@ struct ResolveParams {
     int threads = 0;
 };
 
+// Colours single pixels from their samples: shared by the full-frame resolve and the tiled renderer.
+class PixelResolver {
+public:
+    PixelResolver(const Shader& shader, const ResolveParams& params, int samples);
+    int channels() const { return params_.alpha ? 4 : 3; }
+    // `triangle` and `bary` hold the pixel's `samples` entries in pattern order; writes channels() bytes to out.
+    void resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const;
+
+private:
+    const Shader& shader_;
+    ResolveParams params_;
+    int samples_;
+    uint8_t background_[4];
+};
+
 // The colour image. Uncovered samples take the background colour (or, with alpha, no part in the colour).
 // MSAA shades each triangle in a pixel once, at the first of its samples in pattern order (always inside the
 // triangle, so no extrapolation), weighted by how many samples it covers.
