@@ -36,31 +36,16 @@ uint64_t frame_bytes(const RenderSettings& settings) {
     return pixels * uint64_t(std::max(settings.samples, 0)) * 28u + pixels * 4u;
 }
 
-RenderResult render(const Scene& scene, const RenderOptions& options, const PipelineStages& stages) {
-    RenderResult result;
-    render_into(scene, options, result, stages);
-    return result;
-}
-
-void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result, const PipelineStages& stages) {
-    const auto start = Clock::now();
-    const RenderSettings& settings = scene.settings;
-    result.stats = RenderStats{};
-    RenderStats& stats = result.stats;
-
-    auto stage_start = Clock::now();
-    const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(settings.shading));
-    stats.triangles = geometry.triangles.size();
-    stats.ms_vertex = milliseconds_since(stage_start);
-
+std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry, int threads,
+                                            const PipelineStages& stages, RenderStats& stats) {
     // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
-    stage_start = Clock::now();
     const ClipVolume volume{scene.camera.near, scene.camera.far};
+    const RenderSettings& settings = scene.settings;
     const SetupParams setup_params{settings.width, settings.height, settings.snap_bits, settings.cull_backfaces};
     const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
     std::vector<std::vector<TriangleSetup>> chunk_setups(chunks);
     std::vector<size_t> chunk_clipped(chunks, 0);
-    parallel_for(chunks, options.threads, [&](size_t chunk) {
+    parallel_for(chunks, threads, [&](size_t chunk) {
         const size_t begin = chunk * kSetupChunk;
         const size_t end = std::min(geometry.triangles.size(), begin + kSetupChunk);
         auto& out = chunk_setups[chunk];
@@ -79,6 +64,28 @@ void render_into(const Scene& scene, const RenderOptions& options, RenderResult&
         stats.clipped += chunk_clipped[chunk];
     }
     stats.rasterized = setups.size();
+    return setups;
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& options, const PipelineStages& stages) {
+    RenderResult result;
+    render_into(scene, options, result, stages);
+    return result;
+}
+
+void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result, const PipelineStages& stages) {
+    const auto start = Clock::now();
+    const RenderSettings& settings = scene.settings;
+    result.stats = RenderStats{};
+    RenderStats& stats = result.stats;
+
+    auto stage_start = Clock::now();
+    const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(settings.shading));
+    stats.triangles = geometry.triangles.size();
+    stats.ms_vertex = milliseconds_since(stage_start);
+
+    stage_start = Clock::now();
+    const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, options.threads, stages, stats);
     stats.ms_setup = milliseconds_since(stage_start);
 
     stage_start = Clock::now();

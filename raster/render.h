@@ -33,6 +33,11 @@ struct RenderResult {
     RenderStats stats;
 };
 
+// The front end every renderer shares: clips and sets up the vertex stage's triangles (in parallel chunks, kept
+// in draw order), counting clipped and rasterized triangles into `stats`.
+std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry, int threads,
+                                            const PipelineStages& stages, RenderStats& stats);
+
 // Bytes the frame buffers of `settings` need; render refuses frames above kMaxFrameBytes.
 inline constexpr uint64_t kMaxFrameBytes = uint64_t{4} << 30;  // 4 GiB
 uint64_t frame_bytes(const RenderSettings& settings);
