@@ -15,6 +15,8 @@ namespace raster {
 struct RenderOptions {
     int threads = 0;  // 0 = all cores; the output is the same for any value
     bool alpha = false;
+    bool keep_visibility = true;  // the tiled path can skip filling the full-frame visibility buffer
+    bool allow_simd = true;       // AVX2 where the CPU has it; false forces the portable code (same bytes)
 };
 
 // Counts and in-process timings of one frame (loading excluded).

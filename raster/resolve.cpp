@@ -14,17 +14,18 @@ PixelResolver::PixelResolver(const Shader& shader, const ResolveParams& params, 
     background_[3] = 0;
 }
 
+void PixelResolver::one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const {
+    const glm::vec3 color = shader_.shade(triangle, bary);
+    for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
+    if (params_.alpha) out[3] = 255;
+}
+
 void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const {
-    if (samples_ == 1) {  // the common case, without the averaging
-        if (triangle[0] == kNoTriangle) {
-            std::copy(background_, background_ + channels(), out);
-            return;
-        }
-        const glm::vec3 color = shader_.shade(triangle[0], bary[0]);
-        for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
-        if (params_.alpha) out[3] = 255;
-        return;
-    }
+    // A pixel whose samples all show the same triangle (or nothing) is the common case: one shade, no search.
+    bool uniform = true;
+    for (int s = 1; s < samples_ && uniform; ++s) uniform = triangle[s] == triangle[0];
+    if (uniform && triangle[0] == kNoTriangle) return background(out);
+    if (uniform && (params_.msaa || samples_ == 1)) return one_triangle(triangle[0], bary[0], out);
     glm::vec3 sum(0.0f);
     int covered = 0;
     for (int s = 0; s < samples_; ++s) {
@@ -42,10 +43,7 @@ void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uin
         for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
         sum += static_cast<float>(count) * shader_.shade(triangle[s], bary[s]);
     }
-    if (covered == 0) {
-        std::copy(background_, background_ + channels(), out);
-        return;
-    }
+    if (covered == 0) return background(out);
     glm::vec3 color;
     if (params_.alpha) color = sum / static_cast<float>(covered);
     else color = (sum + static_cast<float>(samples_ - covered) * params_.background) / static_cast<float>(samples_);

@@ -2,6 +2,8 @@
 // samples of each pixel into an 8-bit image. Also turns view depth into a greyscale image.
 #pragma once
 
+#include <algorithm>
+
 #include <glm/vec3.hpp>
 
 #include "raster/image.h"
@@ -24,6 +26,10 @@ public:
     int channels() const { return params_.alpha ? 4 : 3; }
     // `triangle` and `bary` hold the pixel's `samples` entries in pattern order; writes channels() bytes to out.
     void resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const;
+    // The two cases resolve() answers without looking at every sample: no sample covered, and (with MSAA or one
+    // sample) every sample on one triangle, shaded once at `bary`, the pattern's first sample.
+    void background(uint8_t* out) const { std::copy(background_, background_ + channels(), out); }
+    void one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const;
 
 private:
     const Shader& shader_;
