@@ -10,6 +10,7 @@
 #include "raster/image.h"
 #include "raster/render.h"
 #include "raster/resolve.h"
+#include "raster/scene_format_seed000.h"
 #include "raster/scene_loader.h"
 
 namespace raster::cli {
@@ -34,7 +35,8 @@ struct RenderFlags {
 void register_render_flags(CLI::App& app, RenderFlags& flags) {
     CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG or PPM image.");
     render->footer(
-        "SCENE is a raster YAML scene or a seed 003 JSON scene (told apart by content; see README).\n"
+        "SCENE is a raster YAML scene, a seed 000 YAML config (its task decides the output), a seed 001 balboa JSON\n"
+        "scene or a seed 003 JSON scene, told apart by content (see README).\n"
         "Flags override the scene's settings. Example: raster render corpus/scenes/teapot.yaml -o teapot.png --samples 4");
     render->add_option("scene", flags.scene, "Scene file")->required();
     render->add_option("-o,--output", flags.output,
@@ -88,21 +90,31 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
 
 int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     Scene scene;
+    std::optional<Seed000Config> seed000;  // a seed 000 config's task decides what is written
     try {
-        scene = load_scene(flags.scene);
+        SceneFormat format = SceneFormat::raster;
+        scene = load_scene(flags.scene, &format);
+        if (format == SceneFormat::seed000) seed000 = load_seed000_config(flags.scene);
         apply_overrides(flags, scene);
     } catch (const InputError& error) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitBadInput;
     }
-    const std::filesystem::path output =
-        flags.output.empty() ? std::filesystem::path(flags.scene).stem().string() + ".png" : flags.output;
+    if (seed000 && seed000->task == Seed000Task::transform_test) {
+        const Seed000TestResult test = run_seed000_transform_test(*seed000);
+        out << format_seed000_test_result(test);
+        return test.match ? kExitOk : kExitCheckFailed;
+    }
+    std::filesystem::path output = flags.output;
+    if (output.empty() && seed000) output = seed000->output;
+    if (output.empty()) output = std::filesystem::path(flags.scene).stem().string() + ".png";
     RenderOptions options;
     options.threads = flags.threads;
     options.alpha = flags.alpha;
     const RenderResult result = render(scene, options);
     try {
-        write_image(output, result.image);
+        const bool depth_task = seed000 && seed000->task == Seed000Task::shading_depth;
+        write_image(output, depth_task ? depth_image(result.visibility) : result.image);
         if (!flags.depth_out.empty()) write_image(flags.depth_out, depth_image(result.visibility));
     } catch (const std::exception& error) {
         err << "raster render: error: " << error.what() << "\n";

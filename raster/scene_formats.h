@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "raster/scene.h"
+#include "raster/scene_format_seed000.h"
 #include "raster/yaml_reader.h"
 
 namespace raster {
@@ -17,6 +18,12 @@ using MeshFileLoader = std::function<const MeshData&(const YAML::Node& where, co
 
 void read_raster_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
 void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+// Seed 000 configs: the scene the config's task draws (see scene_format_seed000.h); read_seed000_config reads the
+// rest (task, output, transform-test values).
+void read_seed000_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+Seed000Config read_seed000_config(const YAML::Node& root, const YamlReader& reader);
+// Seed 001 (balboa) JSON scenes: camera with resolution / transform / s / z_near, background, objects.
+void read_seed001_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
 
 // A transform chain: a list of single-key maps (translate, rotate, quaternion, scale, lookat), applied to the
 // object in the order listed, so the matrix is M = T_n * ... * T_1.

@@ -15,7 +15,27 @@
 
 namespace raster {
 
-const char* to_string(SceneFormat format) { return format == SceneFormat::seed003 ? "seed003" : "raster"; }
+const char* to_string(SceneFormat format) {
+    switch (format) {
+        case SceneFormat::raster: return "raster";
+        case SceneFormat::seed003: return "seed003";
+        case SceneFormat::seed000: return "seed000";
+        case SceneFormat::seed001: return "seed001";
+    }
+    return "?";
+}
+
+namespace {
+
+SceneFormat detect_format(const YAML::Node& root, const YamlReader& reader) {
+    auto has = [&](const char* key) { return reader.optional(root, key).IsDefined(); };
+    if (has("task")) return SceneFormat::seed000;
+    if (has("camera") && has("objects")) return SceneFormat::seed001;
+    if (has("fov_angle") || has("lookat")) return SceneFormat::seed003;
+    return SceneFormat::raster;
+}
+
+}  // namespace
 
 MeshData load_mesh_file(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
@@ -25,7 +45,7 @@ MeshData load_mesh_file(const std::filesystem::path& path) {
     throw InputError(path.string(), 0, 0, "unknown mesh format '" + extension + "' (expected .obj or .ply)");
 }
 
-Scene parse_scene(std::string_view text, const std::filesystem::path& path) {
+Scene parse_scene(std::string_view text, const std::filesystem::path& path, SceneFormat* format) {
     const std::string name = path.string();
     const YAML::Node root = parse_document(text, name);
     const YamlReader reader(name);
@@ -50,15 +70,20 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& path) {
 
     Scene scene;
     scene.path = name;
-    const bool seed003 = reader.optional(root, "fov_angle").IsDefined() || reader.optional(root, "lookat").IsDefined();
-    if (seed003) read_seed003_scene(root, reader, load_mesh, scene);
-    else read_raster_scene(root, reader, load_mesh, scene);
+    const SceneFormat detected = detect_format(root, reader);
+    switch (detected) {
+        case SceneFormat::raster: read_raster_scene(root, reader, load_mesh, scene); break;
+        case SceneFormat::seed003: read_seed003_scene(root, reader, load_mesh, scene); break;
+        case SceneFormat::seed000: read_seed000_scene(root, reader, load_mesh, scene); break;
+        case SceneFormat::seed001: read_seed001_scene(root, reader, load_mesh, scene); break;
+    }
     validate_scene(scene);
+    if (format) *format = detected;
     return scene;
 }
 
-Scene load_scene(const std::filesystem::path& path) {
-    return parse_scene(read_file_bytes(path, kMaxSceneFileBytes), path);
+Scene load_scene(const std::filesystem::path& path, SceneFormat* format) {
+    return parse_scene(read_file_bytes(path, kMaxSceneFileBytes), path, format);
 }
 
 }  // namespace raster
