@@ -24,7 +24,7 @@ namespace raster {
 // "top" edge (horizontal, dx > 0) or a "left" edge (dy < 0). So a sample on an edge shared by two triangles is
 // covered by exactly one of them, and a sample on a shared vertex by exactly one triangle of the fan.
 //
-// Front faces: counter-clockwise in NDC (y up), as OpenGL's default; that is E_ab(c) > 0 in screen space.
+// Front faces: counter-clockwise in NDC (y up), as OpenGL's default; that is E_ab(c) < 0 in screen space (y down).
 //
 // Depth: the z-buffer holds reversed-Z float depth d = a + b / w_view with d(near) = 1 and d(far) = 0, so
 // larger is nearer and the buffer is cleared to 0. Reversed-Z keeps ~1e-7 relative error at every distance

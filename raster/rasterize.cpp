@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "raster/camera_rays.h"
 #include "raster/conventions.h"
 #include "raster/parallel.h"
 #include "raster/sample_pattern.h"
@@ -91,8 +92,8 @@ void resolve_band(const std::vector<TriangleSetup>& triangles, int row_begin, in
                     continue;
                 }
                 const TriangleSetup& t = triangles[winner];
-                const SampleHit hit = perspective_correct_hit(t, (int64_t{px} << fixed_bits) + offsets.x[s],
-                                                              (int64_t{py} << fixed_bits) + offsets.y[s]);
+                const FixedPosition sample = sample_fixed_position(px, py, s, offsets, fixed_bits);
+                const SampleHit hit = perspective_correct_hit(t, sample.x, sample.y);
                 out.triangle[at] = t.triangle_id;
                 out.bary[at] = hit.bary;
                 out.view_depth[at] = hit.view_depth;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "raster/camera_rays.h"
 #include "raster/conventions.h"
 
 namespace raster {
@@ -42,9 +43,9 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Set
     for (int i = 0; i < polygon.count; ++i) {
         const glm::vec4& p = polygon.vertices[i].position;
         const double inv_w = 1.0 / static_cast<double>(p.w);  // w >= near > 0 after clipping
-        const double sx = (static_cast<double>(p.x) * inv_w + 1.0) * 0.5 * params.width;
-        const double sy = (1.0 - static_cast<double>(p.y) * inv_w) * 0.5 * params.height;
-        screen[i] = {snap(sx, snap_scale, shift, extent_x), snap(sy, snap_scale, shift, extent_y),
+        const glm::dvec2 position = screen_from_ndc(static_cast<double>(p.x) * inv_w, static_cast<double>(p.y) * inv_w,
+                                                    params.width, params.height);
+        screen[i] = {snap(position.x, snap_scale, shift, extent_x), snap(position.y, snap_scale, shift, extent_y),
                      static_cast<float>(static_cast<double>(p.z) * inv_w), static_cast<float>(inv_w),
                      polygon.vertices[i].bary};
     }
@@ -52,11 +53,12 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Set
     int appended = 0;
     for (int k = 1; k + 1 < polygon.count; ++k) {
         const ScreenVertex* v[3] = {&screen[0], &screen[k], &screen[k + 1]};
-        // Twice the signed area, cross(v1 - v0, v2 - v0); > 0 is front-facing (CCW in NDC, see conventions.h).
+        // Twice the signed area, cross(v1 - v0, v2 - v0), in screen space (y down): < 0 is front-facing (CCW in
+        // NDC, see conventions.h).
         int64_t area2 = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
         if (area2 == 0) continue;  // covers no sample under the fill rule
+        if (area2 > 0 && params.cull_backfaces) continue;
         if (area2 < 0) {
-            if (params.cull_backfaces) continue;
             std::swap(v[1], v[2]);
             area2 = -area2;
         }

@@ -1,0 +1,118 @@
+// The oracle's precision model: every tolerance the comparator applies, each derived here, next to its constant,
+// from the sub-pixel snap and the float error of both renderers (DESIGN.md, "The oracle's tolerance model").
+// No constant was tuned to make a scene pass; each bound has its own tests (tests/oracle_precision_test.cpp,
+// tests/compare_classify_test.cpp: just inside a bound is allowed, just outside is not).
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+namespace raster::oracle {
+
+// u, the unit roundoff of float (round to nearest): 2^-24.
+inline constexpr double kFloatUnitRoundoff = 0x1p-24;
+
+// gamma_n = n u / (1 - n u) bounds the relative error of n chained float roundings, and a k-term float dot
+// product has |fl(a.b) - a.b| <= gamma_k |a|.|b| (Higham, "Accuracy and Stability of Numerical Algorithms", 3.1).
+constexpr double float_gamma(int roundings) {
+    return roundings * kFloatUnitRoundoff / (1.0 - roundings * kFloatUnitRoundoff);
+}
+
+// --- 1. The snap ---------------------------------------------------------------------------------------------
+// raster rounds each screen coordinate of each vertex to the nearest multiple of 2^-snap_bits px, so a vertex
+// moves by at most half a step in x and in y (max norm):
+//     snap_displacement = 2^-(snap_bits + 1) px        (1/512 px at the default 8 bits)
+// Every point of the snapped triangle is the same convex combination of the moved vertices as its preimage, so
+// the affine map A from the exact to the snapped triangle moves no point by more than that. Consequences:
+//  - coverage: if the max-norm ball of radius r around a sample lies inside the exact triangle, the map
+//    x -> p + x - A(x) sends the ball into itself, so (Brouwer) A has a point mapping onto p: p is covered by the
+//    snapped triangle too; and a sample covered by the snapped triangle but outside the exact one is joined to
+//    its preimage (inside) by a segment of length <= r that crosses the boundary. Either way, coverage can only
+//    differ within r of the exact triangle's boundary;
+//  - interpolation: raster's screen-space barycentrics at p are the exact triangle's at q = A^-1(p), |q - p| <= r.
+double snap_displacement(int snap_bits);
+
+// --- 2. Float error of a vertex ------------------------------------------------------------------------------
+// A vertex p of a mesh with model matrix M, seen through view V and projection P, in clip space:
+//  - raster computes float(float(float(P V) M) p): three chained 4-term products, so its clip position is within
+//    gamma_12 (|P| |V| |M| |p|) of exact, componentwise;
+inline constexpr int kRasterTransformRoundings = 12;
+//  - the oracle computes float(float(V M) p) in view space (gamma_8 of |V||M||p|; P only rescales x and y, so
+//    gamma_8 |P||V||M||p| bounds it in clip units as well);
+inline constexpr int kOracleTransformRoundings = 8;
+//  - Embree's watertight (Pluecker) test, per edge: vertex sum and difference (2), a cross product (2), a dot
+//    product with the direction (3); then the u, v, t divisions (1); the ray direction itself rounded to
+//    float (1). Its answer is exact arithmetic on vertices moved by gamma_9 of their magnitudes (backward error).
+inline constexpr int kEmbreeTestRoundings = 9;
+// The two renderers err independently, so a vertex of one can be as far from the other's as the sum:
+inline constexpr int kVertexRoundings = kRasterTransformRoundings + kOracleTransformRoundings + kEmbreeTestRoundings;
+
+// The error bound (clip units, per component) of an original vertex whose magnitudes are
+// |P| |V| |M| |(p, 1)|: gamma_29 times them.
+glm::dvec4 vertex_error(const glm::dvec4& magnitudes);
+
+// --- 3. Clipping ---------------------------------------------------------------------------------------------
+// raster's clipper makes each new vertex as a + t (b - a) with t = d_a / (d_a - d_b). In float that is the two
+// plane distances (2 roundings), their difference (1), the division (1), b - a (1), the product (1), the sum (1),
+// and the pin of w to near (1): gamma_8 relative to |a| + |b|. (raster/clip.cpp now computes it in double and
+// rounds once to float before the pin: 2 roundings, well inside the float bound kept here.) The new vertex is a
+// convex combination of the endpoints, so it inherits at most the larger of their errors:
+//     error(new) <= max(error(a), error(b)) + gamma_8 (|a| + |b|)
+inline constexpr int kClipStepRoundings = 8;
+glm::dvec4 clip_step_error(const glm::dvec4& error_a, const glm::dvec4& error_b, const glm::dvec4& magnitudes_a,
+                           const glm::dvec4& magnitudes_b);
+
+// --- 4. From clip space to the screen ------------------------------------------------------------------------
+// A clip-space error e = (ex, ey, ez, ew) at a vertex whose exact clip position is c moves its screen position
+// (x/w + 1) W/2 by at most W/2 (ex + |cx/cw| ew) / (cw - ew) in x, and H/2 (ey + |cy/cw| ew) / (cw - ew) in y
+// (the numerator bounds the change of x w' - x' w over w w'). Infinite when ew >= cw.
+glm::dvec2 screen_error(const glm::dvec4& clip, const glm::dvec4& error, int width, int height);
+
+// The RADIUS of a triangle is r = snap_displacement + the largest screen_error of its clipped vertices (max norm):
+// how far any vertex of raster's or the oracle's version of it can be from exact. The comparator uses it for:
+//  - the EDGE BAND: a disagreement at a sample within r of an edge of an involved triangle is ambiguous, one
+//    beyond r is genuine (section 1);
+//  - the SPREADS: raster's barycentrics and depth at a sample p are the exact triangle's at some q within r of p
+//    (section 1; a perturbed vertex is equivalent to a moved sample by the same argument). Perspective-correct
+//    barycentrics and 1/w are linear-fractional in screen space, so over the max-norm square of half-side r
+//    around p they take their extremes at its 4 corners: the spread of a value is max - min over the corners.
+
+// --- 5. Depth ------------------------------------------------------------------------------------------------
+// The RELATIVE DEPTH ERROR of a vertex, ew / (cw - ew): how far its 1/w (perspective weight) can be off,
+// relatively. A triangle's is the largest over its clipped vertices.
+double relative_depth_error(double w, double w_error);
+
+// Perspective-correct barycentrics b_i = (l_i / w_i) / sum_k (l_k / w_k) with each 1/w_i off by a relative rel
+// move by at most b_i 2 rel / (1 - rel) <= 2 rel / (1 - rel); one renderer then adds the float rounding of its
+// clip-vertex barycentrics (a + t (b - a): 3 roundings) and of its result (1). Per renderer:
+inline constexpr int kBarycentricRoundings = 4;
+double barycentric_rounding(double relative_depth_error);
+
+// View depth 1 / sum_k (l_k / w_k) with each 1/w_k off by a relative rel is off by at most rel / (1 - rel); then
+// raster rounds 1/w_i to float (1) and the result to float (1), and Embree rounds t (1). Per renderer, relative:
+inline constexpr int kViewDepthRoundings = 2;
+double view_depth_rounding(double relative_depth_error);
+
+// DEPTH TIES. raster's depth test compares reversed-Z d = z/w, interpolated linearly in screen space from float
+// vertex values. A vertex's d is off by at most (ez + |d| ew) / (cw - ew) (as in section 4), then rounded to
+// float (1), the interpolated d is rounded to float (1), and the oracle's choice between two surfaces rests on its
+// t, rounded (1) and mapped to d (1): 4 roundings of a value in [0, 1]. A triangle's reversed-Z error:
+inline constexpr int kReversedZRoundings = 4;
+double reversed_z_error(const glm::dvec4& clip, const glm::dvec4& error);
+// Two surfaces TIE at a sample when their reversed-Z intervals over the r-square (corner extremes, widened by each
+// triangle's reversed-Z error) overlap: then either renderer may legitimately show either.
+
+// --- 6. Clip boundary ----------------------------------------------------------------------------------------
+// raster's near and far clip edges sit where its float w crosses the plane: within the triangle's largest
+// clip-space w error (absolute, the DEPTH ERROR) of the exact plane, and then are snapped (r). A sample is on
+// the clip boundary of a triangle when the triangle's view-depth interval over the r-square, widened by the depth
+// error, contains near or far, and the r-square reaches the triangle (every barycentric's corner maximum >= 0).
+
+// --- 7. Colour -----------------------------------------------------------------------------------------------
+// Both renderers' colours come from the same shader applied to (triangle, barycentrics). On agreeing samples, the
+// colour raster's pipeline gives at raster's own (triangle, barycentrics) must equal, byte for byte, what the
+// reference shader gives at the same inputs: the same function of the same inputs is deterministic, so the
+// tolerance is 0 output levels. Colour differences caused by barycentrics are judged by the barycentric bound.
+inline constexpr int kColorToleranceLevels = 0;
+
+}  // namespace raster::oracle

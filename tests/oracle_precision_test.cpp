@@ -1,0 +1,105 @@
+// The precision model's formulas, each against its derivation in oracle/precision.h.
+#include "oracle/precision.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+namespace raster::oracle {
+namespace {
+
+TEST(Precision, theSnapMovesAVertexByHalfASubPixelPerCoordinate) {
+    EXPECT_EQ(snap_displacement(8), 1.0 / 512.0);
+    EXPECT_EQ(snap_displacement(1), 0.25);
+    EXPECT_EQ(snap_displacement(16), std::ldexp(1.0, -17));
+    // The snap itself: floor(x * 2^b + 0.5) / 2^b is never further than that from x.
+    for (double x : {0.0, 0.1, 12.34567, 99.998046875 + 1e-9, 7.0 + 1.0 / 512.0}) {
+        const double snapped = std::floor(x * 256.0 + 0.5) / 256.0;
+        EXPECT_LE(std::fabs(snapped - x), snap_displacement(8)) << x;
+    }
+}
+
+TEST(Precision, gammaIsHighamsBoundOnChainedRoundings) {
+    const double u = std::ldexp(1.0, -24);
+    EXPECT_EQ(kFloatUnitRoundoff, u);
+    EXPECT_DOUBLE_EQ(float_gamma(1), u / (1 - u));
+    EXPECT_DOUBLE_EQ(float_gamma(29), 29 * u / (1 - 29 * u));
+    EXPECT_EQ(kVertexRoundings, 29);
+    // A real 4-term float dot product stays inside gamma_4 |a|.|b|.
+    const float a[4] = {1.1f, -2.3f, 3.7f, 1.0f}, b[4] = {0.3f, 0.77f, -1.9f, 5.5f};
+    float product = 0.0f;
+    double exact = 0.0, magnitude = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        product += a[i] * b[i];
+        exact += double(a[i]) * double(b[i]);
+        magnitude += std::fabs(double(a[i]) * double(b[i]));
+    }
+    EXPECT_LE(std::fabs(product - exact), float_gamma(4) * magnitude);
+}
+
+TEST(Precision, aClippedVertexInheritsTheLargerEndpointErrorPlusItsOwnRounding) {
+    const glm::dvec4 error_a(1e-6, 2e-6, 0, 3e-6), error_b(2e-6, 1e-6, 0, 1e-6);
+    const glm::dvec4 magnitudes_a(1, 2, 3, 4), magnitudes_b(4, 3, 2, 1);
+    const glm::dvec4 e = clip_step_error(error_a, error_b, magnitudes_a, magnitudes_b);
+    const double g = float_gamma(kClipStepRoundings);
+    EXPECT_DOUBLE_EQ(e.x, 2e-6 + 5 * g);
+    EXPECT_DOUBLE_EQ(e.y, 2e-6 + 5 * g);
+    EXPECT_DOUBLE_EQ(e.w, 3e-6 + 5 * g);
+}
+
+TEST(Precision, screenErrorBoundsTheWorstPerturbationOfTheDivide) {
+    const int width = 800, height = 600;
+    const glm::dvec4 clip(0.3, -0.7, 0.5, 2.0), error(1e-5, 2e-5, 0, 3e-5);
+    const glm::dvec2 bound = screen_error(clip, error, width, height);
+    // The worst case moves x and w in opposite directions (x > 0) and y and w in the same (y < 0).
+    const double exact_x = (clip.x / clip.w + 1) * 0.5 * width;
+    const double worst_x = ((clip.x + error.x) / (clip.w - error.w) + 1) * 0.5 * width;
+    EXPECT_LE(std::fabs(worst_x - exact_x), bound.x * (1 + 1e-9));  // the bound is exact: equal up to rounding
+    EXPECT_GT(std::fabs(worst_x - exact_x), 0.99 * bound.x);  // and it is not loose
+    const double exact_y = (1 - clip.y / clip.w) * 0.5 * height;
+    const double worst_y = (1 - (clip.y - error.y) / (clip.w - error.w)) * 0.5 * height;
+    EXPECT_LE(std::fabs(worst_y - exact_y), bound.y * (1 + 1e-9));
+    EXPECT_GT(std::fabs(worst_y - exact_y), 0.99 * bound.y);
+    // An error that can reach w = 0 bounds nothing.
+    EXPECT_TRUE(std::isinf(screen_error(clip, glm::dvec4(0, 0, 0, 2.0), width, height).x));
+}
+
+TEST(Precision, perspectiveBarycentricsMoveByAtMostTwiceTheRelativeDepthError) {
+    // b_i = (l_i / w_i) / sum(l_k / w_k): perturb each 1/w by +-rel in the worst directions and compare.
+    const double rel = 1e-4, l[3] = {0.2, 0.3, 0.5}, w[3] = {1.0, 4.0, 9.0};
+    double worst = 0.0;
+    for (int signs = 0; signs < 8; ++signs) {
+        double exact_sum = 0, sum = 0, weight[3], exact_weight[3];
+        for (int k = 0; k < 3; ++k) {
+            exact_weight[k] = l[k] / w[k];
+            weight[k] = exact_weight[k] * (1 + ((signs >> k) & 1 ? rel : -rel));
+            exact_sum += exact_weight[k];
+            sum += weight[k];
+        }
+        for (int k = 0; k < 3; ++k) worst = std::max(worst, std::fabs(weight[k] / sum - exact_weight[k] / exact_sum));
+    }
+    EXPECT_LE(worst, barycentric_rounding(rel));
+    EXPECT_GT(worst, 0.2 * (barycentric_rounding(rel) - float_gamma(kBarycentricRoundings)));
+    EXPECT_TRUE(std::isinf(barycentric_rounding(1.0)));
+}
+
+TEST(Precision, viewDepthMovesByAtMostTheRelativeDepthError) {
+    const double rel = 1e-4, l[3] = {0.2, 0.3, 0.5}, w[3] = {1.0, 4.0, 9.0};
+    double exact = 0, low = 0;
+    for (int k = 0; k < 3; ++k) {
+        exact += l[k] / w[k];
+        low += l[k] / w[k] * (1 - rel);
+    }
+    EXPECT_LE(std::fabs(1 / low - 1 / exact) / (1 / exact), view_depth_rounding(rel));
+    EXPECT_GT(std::fabs(1 / low - 1 / exact) / (1 / exact), 0.99 * (view_depth_rounding(rel) - float_gamma(kViewDepthRoundings)));
+}
+
+TEST(Precision, reversedZErrorIsTheDerivativeOfZOverW) {
+    const glm::dvec4 clip(0, 0, 0.4, 2.0), error(0, 0, 1e-6, 2e-6);
+    const double exact = clip.z / clip.w, worst = (clip.z + error.z) / (clip.w - error.w);
+    EXPECT_LE(std::fabs(worst - exact), reversed_z_error(clip, error));
+    EXPECT_GT(std::fabs(worst - exact), 0.99 * (reversed_z_error(clip, error) - float_gamma(kReversedZRoundings)));
+}
+
+}  // namespace
+}  // namespace raster::oracle

@@ -1,0 +1,143 @@
+// The Embree oracle: same ids, exact barycentrics and view depth at raster's sample positions, planar near and
+// far clipping, back-face culling, and the same output for any thread count.
+#include "oracle/oracle.h"
+
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "oracle/reference_geometry.h"
+#include "raster/camera_rays.h"
+#include "raster/render.h"
+#include "raster/scene_loader.h"
+#include "tests/oracle_test_scenes.h"
+
+namespace raster::oracle {
+namespace {
+
+using testing::camera_at_origin;
+using testing::scene_with_triangles;
+
+const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
+
+VisibilityBuffer oracle_buffer(const Scene& scene, OracleOptions options = {}) {
+    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
+    VisibilityBuffer out;
+    render_oracle(scene, geometry, options, out);
+    return out;
+}
+
+size_t covered(const VisibilityBuffer& buffer) {
+    size_t n = 0;
+    for (uint32_t id : buffer.triangle) n += id != kNoTriangle;
+    return n;
+}
+
+TEST(Oracle, hitsCarryExactBarycentricsAndViewDepthAtRastersSamplePositions) {
+    Scene scene = load_scene(kCorpus + "perspective_quad.yaml");
+    const VisibilityBuffer buffer = oracle_buffer(scene);
+    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
+    const ReferenceGeometry reference(scene, geometry);
+    const int fixed_bits = fixed_bits_for(scene.settings.snap_bits);
+    const FixedSampleOffsets offsets =
+        fixed_sample_offsets(sample_offsets(scene.settings.samples, scene.settings.pattern), fixed_bits);
+    ASSERT_EQ(buffer.samples, 4);
+    size_t checked = 0;
+    for (int y = 0; y < buffer.height; y += 7)
+        for (int x = 0; x < buffer.width; x += 5)
+            for (int s = 0; s < buffer.samples; ++s) {
+                const size_t at = buffer.index(x, y, s);
+                if (buffer.triangle[at] == kNoTriangle) continue;
+                const ExactHit exact = reference.hit(buffer.triangle[at], sample_screen_position(x, y, s, offsets, fixed_bits));
+                ASSERT_TRUE(exact.valid);
+                EXPECT_NEAR(buffer.view_depth[at], exact.view_depth, 1e-5 * exact.view_depth);
+                for (int k = 0; k < 3; ++k) EXPECT_NEAR(buffer.bary[at][k], exact.bary[k], 1e-4);
+                ++checked;
+            }
+    EXPECT_GT(checked, 500u);
+}
+
+TEST(Oracle, triangleIdsAreTheScenesGlobalIds) {
+    const VisibilityBuffer buffer = oracle_buffer(load_scene(kCorpus + "interpenetrating.yaml"));
+    bool seen[2] = {false, false};
+    for (uint32_t id : buffer.triangle) {
+        if (id == kNoTriangle) continue;
+        ASSERT_LT(id, 2u);
+        seen[id] = true;
+    }
+    EXPECT_TRUE(seen[0] && seen[1]);
+}
+
+TEST(Oracle, theNearPlaneIsAPlaneNotASphere) {
+    // A wall just in front of the near plane (view depth 0.999 < near = 1) and wider than the view: a spherical
+    // near clip (t measured along unit rays) would keep its off-axis parts, where the distance exceeds 1.
+    const float z = -0.999f;
+    const std::vector<testing::Triangle> wall = {{{{-5, -5, z}, {5, -5, z}, {5, 5, z}}}, {{{-5, -5, z}, {5, 5, z}, {-5, 5, z}}}};
+    Scene scene = scene_with_triangles(wall, camera_at_origin(90.0f, 1.0f, 10.0f), 64, 48);
+    EXPECT_EQ(covered(oracle_buffer(scene)), 0u);
+    // Just beyond the near plane it is seen everywhere.
+    const float beyond = -1.001f;
+    const std::vector<testing::Triangle> far_wall = {{{{-5, -5, beyond}, {5, -5, beyond}, {5, 5, beyond}}},
+                                                      {{{-5, -5, beyond}, {5, 5, beyond}, {-5, 5, beyond}}}};
+    scene = scene_with_triangles(far_wall, camera_at_origin(90.0f, 1.0f, 10.0f), 64, 48);
+    EXPECT_EQ(covered(oracle_buffer(scene)), 64u * 48u);
+}
+
+TEST(Oracle, theFarPlaneIsAPlaneToo) {
+    // A wall just beyond far = 10 is not seen anywhere; one just inside is seen everywhere, even at the image
+    // corners where the distance along a unit ray is far more than 10.
+    for (const auto& [z, expected] : {std::pair{-10.01f, 0u}, std::pair{-9.99f, 64u * 48u}}) {
+        const std::vector<testing::Triangle> wall = {{{{-50, -50, z}, {50, -50, z}, {50, 50, z}}},
+                                                     {{{-50, -50, z}, {50, 50, z}, {-50, 50, z}}}};
+        EXPECT_EQ(covered(oracle_buffer(scene_with_triangles(wall, camera_at_origin(90.0f, 1.0f, 10.0f), 64, 48))),
+                  expected)
+            << z;
+    }
+}
+
+TEST(Oracle, backFacesAreLeftOutOnlyWhenTheSceneCulls) {
+    const testing::Triangle counter_clockwise = {{{-1, -1, -3}, {1, -1, -3}, {0, 1, -3}}};
+    const testing::Triangle clockwise = {{{-1, -1, -3}, {0, 1, -3}, {1, -1, -3}}};
+    for (bool cull : {false, true}) {
+        Scene front = scene_with_triangles({counter_clockwise}, camera_at_origin(), 40, 40);
+        Scene back = scene_with_triangles({clockwise}, camera_at_origin(), 40, 40);
+        front.settings.cull_backfaces = back.settings.cull_backfaces = cull;
+        EXPECT_GT(covered(oracle_buffer(front)), 100u);
+        EXPECT_EQ(covered(oracle_buffer(back)) == 0, cull);
+        // raster agrees on which faces are front faces.
+        EXPECT_EQ(render(back, RenderOptions{}).stats.covered_samples == 0, cull);
+    }
+}
+
+TEST(Oracle, sameBuffersForAnyThreadCount) {
+    Scene scene = load_scene(kCorpus + "teapot.yaml");
+    scene.settings.width = scene.settings.height = 200;
+    scene.settings.samples = 4;
+    OracleOptions one, two, five;
+    one.threads = 1;
+    two.threads = 2;
+    five.threads = 5;
+    const VisibilityBuffer a = oracle_buffer(scene, one), b = oracle_buffer(scene, two), c = oracle_buffer(scene, five);
+    for (const VisibilityBuffer* other : {&b, &c}) {
+        ASSERT_EQ(a.size(), other->size());
+        EXPECT_EQ(0, std::memcmp(a.triangle.data(), other->triangle.data(), a.size() * sizeof(uint32_t)));
+        EXPECT_EQ(0, std::memcmp(a.bary.data(), other->bary.data(), a.size() * sizeof(glm::vec3)));
+        EXPECT_EQ(0, std::memcmp(a.view_depth.data(), other->view_depth.data(), a.size() * sizeof(float)));
+    }
+}
+
+TEST(Oracle, fastModeSeesTheSameSurfacesAwayFromEdges) {
+    Scene scene = load_scene(kCorpus + "teapot.yaml");
+    scene.settings.width = scene.settings.height = 200;
+    OracleOptions fast;
+    fast.mode = OracleMode::fast;
+    const VisibilityBuffer robust_buffer = oracle_buffer(scene), fast_buffer = oracle_buffer(scene, fast);
+    size_t same = 0;
+    for (size_t i = 0; i < robust_buffer.size(); ++i) same += robust_buffer.triangle[i] == fast_buffer.triangle[i];
+    EXPECT_GT(same, robust_buffer.size() * 999 / 1000);
+    EXPECT_STREQ(to_string(OracleMode::fast), "fast");
+    EXPECT_STREQ(to_string(OracleMode::robust), "robust");
+}
+
+}  // namespace
+}  // namespace raster::oracle
