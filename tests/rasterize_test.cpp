@@ -9,6 +9,7 @@
 
 #include "raster/sample_pattern.h"
 #include "raster/setup.h"
+#include "tests/reference/coverage_reference.h"
 
 namespace raster {
 namespace {
@@ -46,43 +47,11 @@ VisibilityBuffer run(const std::vector<TriangleSetup>& setups, int samples, Samp
     return visibility;
 }
 
-// --- The independent reference: exact orientation tests in 128-bit integers on the snapped vertices. ---
-struct Point {
-    int64_t x, y;
-};
-
-__int128 orient(Point a, Point b, Point p) {
-    return static_cast<__int128>(b.x - a.x) * (p.y - a.y) - static_cast<__int128>(b.y - a.y) * (p.x - a.x);
-}
-
-// Is the sample on edge a-b owned by the triangle whose third vertex is c? (y down.) The triangle owns the
-// edge when it is a top edge (horizontal, with c below it) or a left edge (not horizontal, with c to its right).
-bool owns_edge(Point a, Point b, Point c) {
-    if (a.y == b.y) return c.y > a.y;
-    // x of the edge's line at c's height, compared with c.x, without division: sign(c.x - x_line) =
-    // sign(orient) * sign(b.y - a.y) up to the orientation convention of orient().
-    const __int128 side = orient(a, b, c) * (b.y > a.y ? 1 : -1);
-    return side < 0;  // orient(a,b,c) = (b-a) x (c-a); for a downward edge, c to the right gives a negative value
-}
-
-bool reference_covers(Point v0, Point v1, Point v2, Point p) {
-    if (orient(v0, v1, v2) == 0) return false;
-    const Point v[3] = {v0, v1, v2};
-    for (int i = 0; i < 3; ++i) {
-        const Point a = v[i], b = v[(i + 1) % 3], c = v[(i + 2) % 3];
-        const __int128 sp = orient(a, b, p), sc = orient(a, b, c);
-        if (sp == 0) {
-            if (!owns_edge(a, b, c)) return false;
-        } else if ((sp > 0) != (sc > 0)) {
-            return false;
-        }
-    }
-    return true;
-}
-
-int64_t snap_to_grid(double screen, int snap_bits, int fixed_bits) {
-    return std::llround(screen * std::ldexp(1.0, snap_bits)) << (fixed_bits - snap_bits);
-}
+// The independent reference: exact orientation tests in 128-bit integers on the snapped vertices.
+using reference::owns_edge;
+using reference::Point;
+using reference::reference_covers;
+using reference::snap_to_grid;
 
 TEST(Rasterize, ownsEdgeReferenceAgreesWithTheDefinition) {
     // The reference's own sanity: in the triangle (0,0) (4,0) (0,4) (y down), the top edge is y = 0 and the left

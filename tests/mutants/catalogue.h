@@ -1,11 +1,13 @@
-// The bug catalogue: classic rasterizer bugs (DESIGN.md), each a faulty variant of one stage, living in the test
-// tree and plugged into the real pipeline through PipelineStages. Every check must show which of them it catches.
+// The bug catalogue: classic rasterizer bugs (DESIGN.md), each a faulty variant of one stage or building block,
+// living in the test tree and plugged in through PipelineStages (and BuildingBlocks for the matrix builders and
+// the loader's transform chain). Every check must show which of them it catches.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "raster/pipeline.h"
+#include "tests/mutants/building_blocks.h"
 
 namespace raster::mutants {
 
@@ -14,6 +16,7 @@ struct Mutant {
     std::string stage;      // the one stage it replaces
     std::string symptom;    // what the bug does, in a sentence
     PipelineStages stages;  // the real pipeline with that stage faulty
+    BuildingBlocks blocks;  // the real building blocks, or with the faulty one when the bug lives in a block
 };
 
 // Every faulty variant, in catalogue order. The list is built once.

@@ -1,0 +1,241 @@
+// Matrix properties, evaluated in double on the float matrices the implementation's blocks and vertex stage build.
+#include "properties/matrix_properties.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "properties/depth_precision.h"
+#include "properties/failure.h"
+#include "properties/generators.h"
+#include "properties/printing.h"
+#include "raster/scene.h"
+#include "raster/transform.h"
+#include "raster/vertex_stage.h"
+
+namespace raster::properties {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double norm1(const glm::dvec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
+
+// The largest entry of |a - b|.
+double largest_difference(const glm::dmat4& a, const glm::dmat4& b) {
+    double d = 0.0;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) d = std::max(d, std::fabs(a[c][r] - b[c][r]));
+    return d;
+}
+
+double largest_difference(const glm::dmat3& a, const glm::dmat3& b) {
+    double d = 0.0;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) d = std::max(d, std::fabs(a[c][r] - b[c][r]));
+    return d;
+}
+
+// The orthonormality bound of a look-at basis: 2^-21 (1 + 1 / sin(angle between up and eye - target)).
+double basis_error(const CameraCase& c) {
+    const glm::dvec3 up(c.up), view = glm::dvec3(c.eye) - glm::dvec3(c.target);
+    const double sine = glm::length(glm::cross(up, view)) / (glm::length(up) * glm::length(view));
+    return std::ldexp(1.0 + 1.0 / sine, -21);
+}
+
+// A view-space point of the lens's frustum at view depth w, `across` its cross-section.
+glm::vec3 frustum_point(const LensCase& c, float w) {
+    const double half = std::tan(static_cast<double>(c.fov_y_degrees) * kPi / 360.0);
+    return {static_cast<float>(c.across.x * w * half * c.aspect), static_cast<float>(c.across.y * w * half), -w};
+}
+
+double scale_ratio(const glm::vec3& s) {
+    const glm::dvec3 a = glm::abs(glm::dvec3(s));
+    return std::max({a.x, a.y, a.z}) / std::min({a.x, a.y, a.z});
+}
+
+glm::mat4 model_of(const mutants::ScaleRotateTranslate& chain) {
+    return translate_matrix(chain.offset) * rotate_matrix(chain.degrees, chain.axis) * scale_matrix(chain.scale);
+}
+
+}  // namespace
+
+void check_view_matrix_is_rigid_and_maps_eye_to_origin_and_target_onto_negative_z(const Implementation& impl) {
+    const CameraCase c = *cameras();
+    RC_CLASSIFY(true, c.kind);
+    const glm::dmat4 view(impl.blocks.look_at(c.eye, c.target, c.up));
+    const glm::dmat3 r(view);
+    const double e = basis_error(c);
+    const double off = largest_difference(glm::transpose(r) * r, glm::dmat3(1.0));
+    if (!(off <= e)) fail_case("R^T R is " + double_literal(off) + " from I (bound " + double_literal(e) + ")");
+    const double det = glm::determinant(r);
+    if (!(std::fabs(det - 1.0) <= 3.0 * e)) fail_case("det R = " + double_literal(det));
+    const glm::dvec3 eye(c.eye), target(c.target);
+    const glm::dvec3 eye_view(view * glm::dvec4(eye, 1.0));
+    const double eye_bound = std::ldexp(norm1(eye), -21);
+    if (!(std::max({std::fabs(eye_view.x), std::fabs(eye_view.y), std::fabs(eye_view.z)}) <= eye_bound))
+        fail_case("the eye maps to (" + double_literal(eye_view.x) + ", " + double_literal(eye_view.y) + ", " +
+                  double_literal(eye_view.z) + "), not the origin (bound " + double_literal(eye_bound) + ")");
+    const double distance = glm::length(target - eye);
+    const glm::dvec3 target_view(view * glm::dvec4(target, 1.0));
+    const glm::dvec3 miss = glm::abs(target_view - glm::dvec3(0.0, 0.0, -distance));
+    const double target_bound = e * distance + std::ldexp(glm::length(eye) + glm::length(target), -22) + eye_bound;
+    if (!(std::max({miss.x, miss.y, miss.z}) <= target_bound))
+        fail_case("the target maps to (" + double_literal(target_view.x) + ", " + double_literal(target_view.y) + ", " +
+                  double_literal(target_view.z) + "), not (0, 0, " + double_literal(-distance) + ")");
+}
+
+void check_projection_maps_near_and_far_planes_to_the_ends_of_the_depth_range(const Implementation& impl) {
+    const LensCase c = *lenses();
+    RC_CLASSIFY(true, c.kind);
+    const glm::mat4 projection = impl.blocks.perspective(c.fov_y_degrees, c.aspect, c.near, c.far);
+    auto check_plane = [&](float w, double expected, double bound, const char* name) {
+        const glm::vec4 clip = projection * glm::vec4(frustum_point(c, w), 1.0f);
+        if (clip.w != w) fail_case(std::string("w on the ") + name + " plane is " + float_literal(clip.w) + ", not " + float_literal(w));
+        const double d = static_cast<double>(clip.z) / static_cast<double>(clip.w);
+        if (!(std::fabs(d - expected) <= bound))
+            fail_case(std::string("the ") + name + " plane gets depth " + double_literal(d) + ", not " + double_literal(expected) +
+                      " within " + double_literal(bound));
+    };
+    check_plane(c.near, 1.0, depth_error_at_near(c.near, c.far), "near");
+    check_plane(c.far, 0.0, depth_error_at_far(c.near, c.far), "far");
+}
+
+void check_projection_maps_the_frustum_edges_to_the_image_border(const Implementation& impl) {
+    const LensCase c = *lenses();
+    RC_CLASSIFY(true, c.kind);
+    Scene scene;
+    scene.settings.width = c.width;
+    scene.settings.height = c.height;
+    scene.settings.shading = ShadingMode::unlit;
+    scene.camera.eye = glm::vec3(0.0f);
+    scene.camera.target = {0.0f, 0.0f, -1.0f};
+    scene.camera.up = {0.0f, 1.0f, 0.0f};
+    scene.camera.fov_y_degrees = c.fov_y_degrees;
+    scene.camera.near = c.near;
+    scene.camera.far = c.far;
+    const double half = std::tan(static_cast<double>(c.fov_y_degrees) * kPi / 360.0);
+    const double aspect = static_cast<double>(c.width) / c.height, t = c.depth;
+    SceneMesh mesh;
+    const double corners[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+    for (const auto& k : corners)
+        mesh.data.positions.push_back({static_cast<float>(k[0] * t * half * aspect), static_cast<float>(k[1] * t * half),
+                                       static_cast<float>(-t)});
+    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    scene.meshes.push_back(mesh);
+    const TransformedScene out = impl.stages.vertex(scene, vertex_stage_needs(ShadingMode::unlit));
+    const double bound = std::ldexp(1.0, -21);
+    for (size_t i = 0; i < 4; ++i) {
+        const glm::dvec4 p(out.clip.at(i));
+        const double x = p.x / p.w, y = p.y / p.w;
+        if (!(std::fabs(x - corners[i][0]) <= bound && std::fabs(y - corners[i][1]) <= bound))
+            fail_case("the frustum corner (" + std::to_string(int(corners[i][0])) + ", " + std::to_string(int(corners[i][1])) +
+                      ") of a " + std::to_string(c.width) + "x" + std::to_string(c.height) + " image lands at NDC (" +
+                      double_literal(x) + ", " + double_literal(y) + ")");
+    }
+}
+
+void check_round_trips_through_the_inverses_hold(const Implementation& impl) {
+    const CameraCase camera = *cameras();
+    const LensCase lens = *lenses();
+    const ModelCase model = *models();
+    RC_CLASSIFY(true, camera.kind);
+
+    // View and its inverse (the look-at model matrix).
+    const glm::dmat4 there_and_back = glm::dmat4(impl.blocks.look_at(camera.eye, camera.target, camera.up)) *
+                                      glm::dmat4(impl.blocks.look_at_inverse(camera.eye, camera.target, camera.up));
+    const double e = basis_error(camera);
+    const double rotation_off = largest_difference(glm::dmat3(there_and_back), glm::dmat3(1.0));
+    const glm::dvec3 translation(there_and_back[3]);
+    const double translation_bound = std::ldexp(norm1(glm::dvec3(camera.eye)), -21);
+    if (!(rotation_off <= e) ||
+        !(std::max({std::fabs(translation.x), std::fabs(translation.y), std::fabs(translation.z)}) <= translation_bound))
+        fail_case("view * inverse view is not I: rotation off by " + double_literal(rotation_off) + ", translation (" +
+                  double_literal(translation.x) + ", " + double_literal(translation.y) + ", " + double_literal(translation.z) + ")");
+
+    // Projection and its inverse on a point of the frustum.
+    const glm::mat4 projection = impl.blocks.perspective(lens.fov_y_degrees, lens.aspect, lens.near, lens.far);
+    const glm::vec3 point = frustum_point(lens, lens.depth);
+    glm::dvec4 back = glm::inverse(glm::dmat4(projection)) * glm::dvec4(projection * glm::vec4(point, 1.0f));
+    back /= back.w;
+    const glm::dvec3 miss = glm::abs(glm::dvec3(back) - glm::dvec3(point));
+    const double size = std::max({std::fabs(point.x), std::fabs(point.y), std::fabs(point.z)});
+    if (!(std::max({miss.x, miss.y, miss.z}) <= std::ldexp(size, -21)))
+        fail_case("unprojecting the projected point " + literal(point) + " gives (" + double_literal(back.x) + ", " +
+                  double_literal(back.y) + ", " + double_literal(back.z) + ")");
+
+    // Viewport: the documented corners, and the inverse.
+    const glm::mat4 viewport = impl.blocks.viewport(lens.width, lens.height);
+    const glm::vec4 top_left = viewport * glm::vec4(-1.0f, 1.0f, 0.0f, 1.0f);
+    const glm::vec4 bottom_right = viewport * glm::vec4(1.0f, -1.0f, 0.0f, 1.0f);
+    if (top_left.x != 0.0f || top_left.y != 0.0f || bottom_right.x != float(lens.width) || bottom_right.y != float(lens.height))
+        fail_case("the viewport does not map NDC (-1, 1) to (0, 0) and (1, -1) to (width, height)");
+    const glm::dvec4 ndc(lens.across.x, lens.across.y, 0.5, 1.0);
+    const glm::dvec4 ndc_back = glm::inverse(glm::dmat4(viewport)) * glm::dvec4(viewport * glm::vec4(ndc));
+    if (!(std::fabs(ndc_back.x - ndc.x) <= std::ldexp(1.0, -21) && std::fabs(ndc_back.y - ndc.y) <= std::ldexp(1.0, -21)))
+        fail_case("the viewport round trip moves NDC (" + double_literal(ndc.x) + ", " + double_literal(ndc.y) + ")");
+
+    // Normal matrix: N^T M = (M^-1 M) = I for the model's 3x3.
+    const glm::mat4 m = model_of(model.chain);
+    const glm::dmat3 product = glm::transpose(glm::dmat3(impl.blocks.normal_matrix(m))) * glm::dmat3(glm::mat3(m));
+    const double normal_bound = std::ldexp(scale_ratio(model.chain.scale), -20);
+    const double normal_off = largest_difference(product, glm::dmat3(1.0));
+    if (!(normal_off <= normal_bound))
+        fail_case("normal_matrix(M)^T M is " + double_literal(normal_off) + " from I (bound " + double_literal(normal_bound) + ")");
+}
+
+void check_model_matrix_is_translate_times_rotate_times_scale(const Implementation& impl) {
+    const ModelCase c = *models();
+    RC_CLASSIFY(true, c.kind);
+    const glm::dmat4 built(impl.blocks.model_matrix(c.chain));
+    const glm::dmat4 expected = glm::dmat4(translate_matrix(c.chain.offset)) *
+                                glm::dmat4(rotate_matrix(c.chain.degrees, c.chain.axis)) *
+                                glm::dmat4(scale_matrix(c.chain.scale));
+    const glm::dvec3 s = glm::abs(glm::dvec3(c.chain.scale)), t = glm::abs(glm::dvec3(c.chain.offset));
+    const double bound = std::ldexp(std::max({s.x, s.y, s.z}) + std::max({t.x, t.y, t.z}), -22);
+    const double off = largest_difference(built, expected);
+    if (!(off <= bound) || built[0][3] != 0.0 || built[1][3] != 0.0 || built[2][3] != 0.0 || built[3][3] != 1.0)
+        fail_case("the model matrix differs from T R S by " + double_literal(off) + " (bound " + double_literal(bound) + ")");
+}
+
+void check_normal_matrix_keeps_normals_perpendicular_to_surfaces(const Implementation& impl) {
+    const ModelCase c = *models();
+    RC_CLASSIFY(true, c.kind);
+    const glm::mat4 m = model_of(c.chain);
+    const glm::dvec3 p0(c.triangle[0]), p1(c.triangle[1]), p2(c.triangle[2]);
+    const glm::vec3 normal(glm::normalize(glm::cross(p1 - p0, p2 - p0)));
+    const double kappa = scale_ratio(c.chain.scale);
+
+    Scene scene;
+    scene.settings.shading = ShadingMode::blinn_phong;
+    SceneMesh mesh;
+    mesh.data.positions = {c.triangle[0], c.triangle[1], c.triangle[2]};
+    mesh.data.normals = {normal, normal, normal};
+    mesh.data.triangles = {{{0, 1, 2}}};
+    mesh.model = m;
+    scene.meshes.push_back(mesh);
+    const TransformedScene out = impl.stages.vertex(scene, vertex_stage_needs(ShadingMode::blinn_phong));
+    const glm::dvec3 s = glm::abs(glm::dvec3(c.chain.scale)), t = glm::abs(glm::dvec3(c.chain.offset));
+    const double reach = std::max({s.x, s.y, s.z}) * std::max({glm::length(p0), glm::length(p1), glm::length(p2)}) +
+                         std::max({t.x, t.y, t.z});
+    const glm::dmat3 n_block(impl.blocks.normal_matrix(m));
+    for (size_t j = 1; j < 3; ++j) {
+        // Through the vertex stage.
+        const glm::dvec3 n(out.world_normal.at(j)), edge = glm::dvec3(out.world_position.at(j)) - glm::dvec3(out.world_position.at(0));
+        const double cosine = std::fabs(glm::dot(n, edge)) / (glm::length(n) * glm::length(edge));
+        const double bound = std::ldexp(1.0 + kappa + 4.0 * reach / glm::length(edge), -20);
+        if (!(cosine <= bound))
+            fail_case("the vertex stage's world normal makes cos " + double_literal(cosine) + " with a world edge (bound " +
+                      double_literal(bound) + ")");
+        // The normal-matrix block alone, against the edge transformed in double.
+        const glm::dvec3 nb = n_block * glm::dvec3(normal);
+        const glm::dvec3 eb = glm::dmat3(glm::mat3(m)) * (glm::dvec3(c.triangle[j]) - p0);
+        const double cosine_block = std::fabs(glm::dot(nb, eb)) / (glm::length(nb) * glm::length(eb));
+        if (!(cosine_block <= std::ldexp(1.0 + kappa, -20)))
+            fail_case("normal_matrix(M) n makes cos " + double_literal(cosine_block) + " with M e");
+    }
+}
+
+}  // namespace raster::properties

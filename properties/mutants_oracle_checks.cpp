@@ -1,0 +1,79 @@
+// Oracle checks: corpus scenes rendered by the implementation's stages and by the oracle, compared sample by sample.
+#include "properties/mutants_oracle_checks.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+#include "oracle/comparison.h"
+#include "raster/scene_loader.h"
+
+namespace raster::properties {
+namespace {
+
+const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
+constexpr const char* kMovedNear = "near_crossing, near 2";
+constexpr const char* kAttenuation = "attenuating light";
+
+Scene scene_of(const std::string& name) {
+    if (name == kAttenuation) {
+        // A lit triangle 3 units in front of the camera under a light 1 unit in front of it, attenuated.
+        Scene scene;
+        scene.path = kAttenuation;
+        scene.settings.width = scene.settings.height = 64;
+        scene.settings.shading = ShadingMode::blinn_phong;
+        scene.camera.eye = glm::vec3(0.0f);
+        scene.camera.target = {0.0f, 0.0f, -1.0f};
+        SceneMesh mesh;
+        mesh.source = "inline";
+        mesh.data.positions = {{-1, -1, -3}, {1, -1, -3}, {0, 1, -3}};
+        mesh.data.triangles = {{{0, 1, 2}}};
+        scene.meshes.push_back(mesh);
+        Light light;
+        light.position = {0.0f, 0.0f, -1.0f};
+        light.attenuate = true;
+        scene.lights.push_back(light);
+        return scene;
+    }
+    Scene scene = load_scene(kCorpus + (name == kMovedNear ? std::string("near_crossing") : name) + ".yaml");
+    scene.settings.samples = 1;
+    if (name == kMovedNear) scene.camera.near = 2.0f;
+    return scene;
+}
+
+uint64_t genuine(const std::string& name, const PipelineStages& stages, int threads, std::string* reasons = nullptr) {
+    oracle::ComparisonOptions options;
+    options.threads = threads;
+    const oracle::Comparison c = oracle::compare_scene(scene_of(name), options, stages);
+    if (reasons)
+        for (oracle::SampleClass k : {oracle::SampleClass::visibility, oracle::SampleClass::barycentrics,
+                                      oracle::SampleClass::depth, oracle::SampleClass::color})
+            if (c.counts.count(k)) *reasons += std::string(reasons->empty() ? "" : ", ") + oracle::to_string(k) + " " + std::to_string(c.counts.count(k));
+    return c.counts.genuine_total();
+}
+
+}  // namespace
+
+std::vector<std::string> oracle_checks() {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(kCorpus))
+        if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    names.push_back(kMovedNear);
+    names.push_back(kAttenuation);
+    for (std::string& name : names) name = "Oracle." + name;
+    return names;
+}
+
+std::string run_oracle_check(const std::string& check, const Implementation& impl) {
+    const std::string scene = check.substr(7);
+    static std::map<std::string, uint64_t> baselines;
+    if (!baselines.count(scene)) baselines[scene] = genuine(scene, PipelineStages{}, 1);
+    std::string reasons;
+    const uint64_t found = genuine(scene, impl.stages, 1, &reasons);
+    if (found <= baselines[scene]) return "";
+    return std::to_string(found) + " genuine disagreements with the oracle (" + reasons + "); the real pipeline has " +
+           std::to_string(baselines[scene]);
+}
+
+}  // namespace raster::properties

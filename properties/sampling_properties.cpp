@@ -1,0 +1,59 @@
+// Sampling properties: area convergence on grid patterns and the documented sample tables.
+#include "properties/sampling_properties.h"
+
+#include <cmath>
+#include <string>
+
+#include "properties/documented_samples.h"
+#include "properties/failure.h"
+#include "properties/generators.h"
+#include "properties/printing.h"
+#include "tests/reference/coverage_reference.h"
+
+namespace raster::properties {
+
+void check_grid_coverage_converges_to_the_exact_area_within_a_perimeter_bound(const Implementation& impl) {
+    const TilingCase c = *grid_sampled_triangles();
+    RC_CLASSIFY(true, c.kind);
+    const Frame& frame = c.frame;
+    const std::vector<ClipTriangle> triangles = clip_triangles(frame, c.mesh);
+    const VisibilityBuffer visibility = draw(impl, frame, triangles);
+    double covered = 0.0;
+    for (size_t i = 0; i < visibility.size(); ++i) covered += visibility.triangle[i] != kNoTriangle;
+
+    reference::Point v[3];
+    for (size_t i = 0; i < 3; ++i) v[i] = snapped(frame, triangles[0].v[i]);
+    const double unit = std::ldexp(1.0, -frame.fixed_bits());
+    const double area = std::fabs(static_cast<double>(reference::orient(v[0], v[1], v[2]))) * 0.5 * unit * unit;
+    double perimeter = 0.0;
+    for (int i = 0; i < 3; ++i)
+        perimeter += std::hypot(double(v[(i + 1) % 3].x - v[i].x), double(v[(i + 1) % 3].y - v[i].y)) * unit;
+    const double n = std::sqrt(static_cast<double>(frame.samples));
+    const double estimate = covered / frame.samples, bound = std::sqrt(2.0) * perimeter / n + 9.0 / (n * n);
+    RC_CLASSIFY(area < 1.0, "area under one pixel");
+    if (!(std::fabs(estimate - area) <= bound))
+        fail_case("coverage " + double_literal(estimate) + " px^2 of a triangle of area " + double_literal(area) +
+                  " and perimeter " + double_literal(perimeter) + " is off by more than " + double_literal(bound));
+}
+
+void check_standard_patterns_are_the_documented_positions(const Implementation& impl) {
+    // Every documented pattern, every case: 1, 2, 4, 8 and 16 standard samples and the 1x1 to 16x16 grids.
+    for (int n = 1; n <= 16 + 5; ++n) {
+        const bool grid = n <= 16;
+        const int standard[] = {1, 2, 4, 8, 16};
+        const int samples = grid ? n * n : standard[n - 17];
+        const SamplePattern pattern = grid ? SamplePattern::grid : SamplePattern::standard;
+        const std::vector<glm::dvec2> documented = documented_sample_offsets(samples, pattern);
+        const std::vector<glm::vec2> offsets = impl.stages.sample_offsets(samples, pattern);
+        const std::string which = std::to_string(samples) + " " + to_string(pattern) + " samples";
+        if (offsets.size() != documented.size()) fail_case(std::to_string(offsets.size()) + " offsets for " + which);
+        const double bound = grid ? std::ldexp(1.0, -25) : 0.0;
+        for (size_t i = 0; i < offsets.size(); ++i)
+            if (!(std::fabs(offsets[i].x - documented[i].x) <= bound && std::fabs(offsets[i].y - documented[i].y) <= bound))
+                fail_case("sample " + std::to_string(i) + " of " + which + " is at (" + float_literal(offsets[i].x) + ", " +
+                          float_literal(offsets[i].y) + "), documented (" + double_literal(documented[i].x) + ", " +
+                          double_literal(documented[i].y) + ")");
+    }
+}
+
+}  // namespace raster::properties
