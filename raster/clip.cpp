@@ -1,6 +1,7 @@
 // Clipping: Sutherland-Hodgman against six planes in homogeneous clip space, carrying original barycentrics.
 #include "raster/clip.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raster {
@@ -8,15 +9,17 @@ namespace {
 
 enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };
 
-// Signed distance-like value: >= 0 inside. Exact plane equations, each scaled by a positive factor.
-inline float plane_distance(int plane, const glm::vec4& p, const ClipVolume& volume) {
+// Signed distance-like value: >= 0 inside. Exact plane equations, each scaled by a positive factor. In double,
+// because the float sum of two coordinates near FLT_MAX overflows (the sign of the sum is the same either way).
+inline double plane_distance(int plane, const glm::vec4& p, const ClipVolume& volume) {
+    const double x = p.x, y = p.y, w = p.w;
     switch (plane) {
-        case kNear: return p.w - volume.near;
-        case kFar: return volume.far - p.w;
-        case kLeft: return p.x + p.w;
-        case kRight: return p.w - p.x;
-        case kBottom: return p.y + p.w;
-        default: return p.w - p.y;
+        case kNear: return w - double(volume.near);
+        case kFar: return double(volume.far) - w;
+        case kLeft: return x + w;
+        case kRight: return w - x;
+        case kBottom: return y + w;
+        default: return w - y;
     }
 }
 
@@ -28,14 +31,22 @@ inline bool finite(const glm::vec4& p) {
 inline unsigned outcode(const glm::vec4& p, const ClipVolume& volume) {
     unsigned code = 0;
     for (int plane = 0; plane < kPlaneCount; ++plane)
-        if (plane_distance(plane, p, volume) < 0.0f) code |= 1u << plane;
+        if (plane_distance(plane, p, volume) < 0.0) code |= 1u << plane;
     return code;
 }
 
-// The point where the segment from `inside` to `outside` crosses the plane.
-inline ClipVertex intersect(const ClipVertex& inside, float d_in, const ClipVertex& outside, float d_out) {
-    const float t = d_in / (d_in - d_out);
-    return {inside.position + t * (outside.position - inside.position), inside.bary + t * (outside.bary - inside.bary)};
+// The point where the segment from `inside` to `outside` crosses the plane. In double and clamped to the segment:
+// in float, outside - inside overflows for coordinates near FLT_MAX, and t * inf with t = 0 gives NaN.
+inline ClipVertex intersect(const ClipVertex& inside, double d_in, const ClipVertex& outside, double d_out) {
+    const double t = d_in / (d_in - d_out);  // in [0, 1): d_in >= 0 > d_out
+    const auto between = [t](float from, float to) {
+        const double value = double(from) + t * (double(to) - double(from));
+        return static_cast<float>(std::clamp(value, double(std::min(from, to)), double(std::max(from, to))));
+    };
+    ClipVertex vertex;
+    for (int i = 0; i < 4; ++i) vertex.position[i] = between(inside.position[i], outside.position[i]);
+    for (int i = 0; i < 3; ++i) vertex.bary[i] = between(inside.bary[i], outside.bary[i]);
+    return vertex;
 }
 
 }  // namespace
@@ -63,9 +74,9 @@ ClippedPolygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::
         for (int i = 0; i < count; ++i) {
             const ClipVertex& current = (*input)[i];
             const ClipVertex& next = (*input)[(i + 1) % count];
-            const float d_current = plane_distance(plane, current.position, volume);
-            const float d_next = plane_distance(plane, next.position, volume);
-            const bool current_in = d_current >= 0.0f, next_in = d_next >= 0.0f;
+            const double d_current = plane_distance(plane, current.position, volume);
+            const double d_next = plane_distance(plane, next.position, volume);
+            const bool current_in = d_current >= 0.0, next_in = d_next >= 0.0;
             if (written + 2 > kMaxClippedVertices) {  // only a numerically degenerate sliver gets here
                 result.count = 0;
                 return result;

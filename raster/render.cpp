@@ -3,6 +3,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -137,6 +139,12 @@ std::string settings_problem(const RenderSettings& s) {
 std::string camera_problem(const Camera& c) {
     if (!finite3(c.eye) || !finite3(c.target) || !finite3(c.up)) return "camera eye, target and up must be finite";
     if (!(c.near > 0.0f) || !std::isfinite(c.near)) return "camera near must be > 0, got " + std::to_string(c.near);
+    // Setup stores 1 / w in float, and w goes down to near: a subnormal near would make it infinite.
+    if (c.near < std::numeric_limits<float>::min()) {
+        char near[32];
+        std::snprintf(near, sizeof near, "%g", double(c.near));
+        return std::string("camera near must be > 0 and a normal float (at least 1.17549e-38), got ") + near;
+    }
     if (!(c.far > c.near) || !std::isfinite(c.far))
         return "camera far (" + std::to_string(c.far) + ") must be finite and greater than near (" +
                std::to_string(c.near) + ")";
@@ -154,6 +162,15 @@ void validate_scene(const Scene& scene) {
     auto fail = [&](const std::string& message) { throw InputError(scene.path, 0, 0, message); };
     if (std::string problem = settings_problem(scene.settings); !problem.empty()) fail(problem);
     if (std::string problem = camera_problem(scene.camera); !problem.empty()) fail(problem);
+    // A field of view so narrow that 1 / tan(fov / 2) overflows float gives an infinite projection: nothing could
+    // be drawn, and camera rays (the oracle's) would be NaN.
+    const glm::mat4 projection = projection_matrix(scene.camera, scene.settings.width, scene.settings.height);
+    for (int column = 0; column < 4; ++column)
+        if (!finite3(glm::vec3(projection[column])) || !std::isfinite(projection[column].w)) {
+            char fov[32];
+            std::snprintf(fov, sizeof fov, "%g", double(scene.camera.fov_y_degrees));
+            fail(std::string("camera field of view ") + fov + " degrees is too narrow: its projection overflows float");
+        }
     if (triangle_count(scene) >= kNoTriangle) fail("too many triangles");
 
     for (const Light& light : scene.lights)

@@ -1,4 +1,6 @@
 // The project's own scene format (YAML; README "Scene format"): every field optional except what a scene needs.
+#include <limits>
+
 #include <glm/geometric.hpp>
 
 #include "raster/render.h"
@@ -94,7 +96,7 @@ void read_camera(const YAML::Node& node, const YamlReader& reader, Camera& camer
         // Point at the value the problem is about, checked in camera_problem's order (the map when defaulted).
         auto first_defined = [&](const YAML::Node& a, const YAML::Node& b) { return a.IsDefined() ? a : b.IsDefined() ? b : node; };
         YAML::Node where = first_defined(up, eye);
-        if (!(camera.near > 0.0f)) where.reset(first_defined(near, near));
+        if (!(camera.near >= std::numeric_limits<float>::min())) where.reset(first_defined(near, near));
         else if (!(camera.far > camera.near)) where.reset(first_defined(far, near));
         else if (!(camera.fov_y_degrees > 0.0f && camera.fov_y_degrees < 180.0f)) where.reset(first_defined(fov, fov));
         else if (camera.eye == camera.target) where.reset(first_defined(target, eye));

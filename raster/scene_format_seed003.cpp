@@ -1,6 +1,7 @@
 // The seed 003 course's JSON scene: eye / lookat / up / fov_angle / width / height / near / far, lights and
 // meshes loaded from OBJ files with Blinn-Phong materials.
 #include <cstdio>
+#include <limits>
 
 #include "raster/render.h"
 #include "raster/scene_formats.h"
@@ -38,7 +39,7 @@ void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const 
     if (std::string problem = camera_problem(camera); !problem.empty()) {
         // Point at the value the problem is about, checked in camera_problem's order.
         YAML::Node where = up;
-        if (!(camera.near > 0.0f)) where.reset(near);
+        if (!(camera.near >= std::numeric_limits<float>::min())) where.reset(near);
         else if (!(camera.far > camera.near)) where.reset(far);
         else if (!(camera.fov_y_degrees > 0.0f && camera.fov_y_degrees < 180.0f)) where.reset(fov);
         else if (camera.eye == camera.target) where.reset(lookat);
