@@ -22,6 +22,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     app.require_subcommand(1);
     const std::vector<Command> commands = {
         add_render_command(app),
+        add_compare_command(app),
+        add_report_command(app),
+        add_balboa_command(app),
     };
 
     std::vector<std::string> reversed(args.rbegin(), args.rend());

@@ -20,5 +20,8 @@ struct Command {
 
 // One function per subcommand, each in apps/cmd_<name>.cpp.
 Command add_render_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
+Command add_report_command(CLI::App& app);
+Command add_balboa_command(CLI::App& app);
 
 }  // namespace raster::cli
