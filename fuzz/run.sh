@@ -102,7 +102,13 @@ names=()
 if [[ $target == all ]]; then
   for binary in "$build"/fuzz/*_fuzzer; do
     name=$(basename "$binary")
-    names+=("${name%_fuzzer}")
+    name=${name%_fuzzer}
+    # RASTER_FUZZ_SKIP: space-separated targets left out of an `all` run (CI skips targets with open findings).
+    if [[ " ${RASTER_FUZZ_SKIP:-} " == *" $name "* ]]; then
+      echo "fuzz: $name skipped (RASTER_FUZZ_SKIP; see fuzz/known_issues/README.md)" >&2
+      continue
+    fi
+    names+=("$name")
   done
 else
   [[ -x $build/fuzz/${target}_fuzzer ]] || { echo "fuzz: no target '$target' in $build/fuzz" >&2; exit 2; }
