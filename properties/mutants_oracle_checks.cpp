@@ -12,8 +12,8 @@ namespace raster::properties {
 namespace {
 
 const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
-constexpr const char* kMovedNear = "near_crossing, near 2";
-constexpr const char* kAttenuation = "attenuating light";
+constexpr const char* kMovedNear = "near_crossing_with_near_2";
+constexpr const char* kAttenuation = "attenuating_light";
 
 Scene scene_of(const std::string& name) {
     if (name == kAttenuation) {
