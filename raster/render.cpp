@@ -23,9 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double milliseconds_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 constexpr size_t kSetupChunk = 4096;
 
@@ -69,6 +66,27 @@ std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const Transforme
     return setups;
 }
 
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages& stages, RenderStats& stats) {
+    const auto start = Clock::now();
+    TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(scene.settings.shading));
+    stats.triangles = geometry.triangles.size();
+    stats.ms_vertex = milliseconds_since(start);
+    return geometry;
+}
+
+ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options) {
+    ResolveParams params;
+    params.msaa = scene.settings.msaa;
+    params.background = scene.settings.background;
+    params.alpha = options.alpha;
+    params.threads = options.threads;
+    return params;
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& options, const PipelineStages& stages) {
     RenderResult result;
     render_into(scene, options, result, stages);
@@ -81,12 +99,9 @@ void render_into(const Scene& scene, const RenderOptions& options, RenderResult&
     result.stats = RenderStats{};
     RenderStats& stats = result.stats;
 
-    auto stage_start = Clock::now();
-    const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(settings.shading));
-    stats.triangles = geometry.triangles.size();
-    stats.ms_vertex = milliseconds_since(stage_start);
+    const TransformedScene geometry = run_vertex_stage_timed(scene, stages, stats);
 
-    stage_start = Clock::now();
+    auto stage_start = Clock::now();
     const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, options.threads, stages, stats);
     stats.ms_setup = milliseconds_since(stage_start);
 
@@ -103,12 +118,7 @@ void render_into(const Scene& scene, const RenderOptions& options, RenderResult&
 
     stage_start = Clock::now();
     const Shader shader(scene, geometry, stages.lighting);
-    ResolveParams resolve_params;
-    resolve_params.msaa = settings.msaa;
-    resolve_params.background = settings.background;
-    resolve_params.alpha = options.alpha;
-    resolve_params.threads = options.threads;
-    resolve_image(result.visibility, shader, resolve_params, result.image);
+    resolve_image(result.visibility, shader, resolve_params_for(scene, options), result.image);
     stats.ms_shade = milliseconds_since(stage_start);
 
     for (uint32_t id : result.visibility.triangle) stats.covered_samples += id != kNoTriangle;

@@ -2,11 +2,13 @@
 // shading and resolve -> image, with timings.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 
 #include "raster/image.h"
 #include "raster/pipeline.h"
+#include "raster/resolve.h"
 #include "raster/scene.h"
 #include "raster/visibility_buffer.h"
 
@@ -39,6 +41,15 @@ struct RenderResult {
 // in draw order), counting clipped and rasterized triangles into `stats`.
 std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry, int threads,
                                             const PipelineStages& stages, RenderStats& stats);
+
+// The vertex stage every renderer runs first, counted and timed into `stats` (triangles, ms_vertex).
+TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages& stages, RenderStats& stats);
+
+// How the scene's settings and the options ask for samples to be resolved into pixels.
+ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options);
+
+// Milliseconds since `start`, for the stage timings.
+double milliseconds_since(std::chrono::steady_clock::time_point start);
 
 // Bytes the frame buffers of `settings` need; render refuses frames above kMaxFrameBytes.
 inline constexpr uint64_t kMaxFrameBytes = uint64_t{4} << 30;  // 4 GiB

@@ -15,10 +15,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double milliseconds_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 // The tiles of the frame and, for each, the setups that may cover one of its samples, in draw order.
 struct Bins {
     int tiles_x = 0, tiles_y = 0;
@@ -235,12 +231,9 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
     result.stats = RenderStats{};
     RenderStats& stats = result.stats;
 
-    auto stage_start = Clock::now();
-    const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(settings.shading));
-    stats.triangles = geometry.triangles.size();
-    stats.ms_vertex = milliseconds_since(stage_start);
+    const TransformedScene geometry = run_vertex_stage_timed(scene, stages, stats);
 
-    stage_start = Clock::now();
+    auto stage_start = Clock::now();
     const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, options.threads, stages, stats);
     const int fixed_bits = fixed_bits_for(settings.snap_bits);
     const FixedSampleOffsets offsets =
@@ -255,11 +248,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
 
     stage_start = Clock::now();
     const Shader shader(scene, geometry, stages.lighting);
-    ResolveParams resolve_params;
-    resolve_params.msaa = settings.msaa;
-    resolve_params.background = settings.background;
-    resolve_params.alpha = options.alpha;
-    const PixelResolver resolver(shader, resolve_params, samples);
+    const PixelResolver resolver(shader, resolve_params_for(scene, options), samples);
     Image& image = result.image;
     image.width = settings.width;
     image.height = settings.height;
