@@ -85,34 +85,37 @@ ClippedPolygon clip_letting_nan_through(const glm::vec4& a, const glm::vec4& b, 
 
 // --- setup --------------------------------------------------------------------------------------------------
 
+// Runs the real setup, then lets `fault` alter each triangle it appended: the shape of most setup mutants.
+template <class Fault>
+int setup_then(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params, std::vector<TriangleSetup>& out,
+               Fault fault) {
+    const size_t first = out.size();
+    const int added = setup_polygon(polygon, id, params, out);
+    for (size_t k = first; k < out.size(); ++k) fault(out[k]);
+    return added;
+}
+
 // "no fill rule": samples exactly on an edge are inside for every triangle, so shared edges are covered twice.
 int setup_without_fill_rule(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
                             std::vector<TriangleSetup>& out) {
-    const size_t first = out.size();
-    const int added = setup_polygon(polygon, id, params, out);
-    for (size_t i = first; i < out.size(); ++i)
-        for (int64_t& bias : out[i].bias) bias = 0;
-    return added;
+    return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
+        for (int64_t& bias : t.bias) bias = 0;
+    });
 }
 
 // "cracks on shared edges": samples exactly on an edge are outside for every triangle.
 int setup_with_cracks(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
                       std::vector<TriangleSetup>& out) {
-    const size_t first = out.size();
-    const int added = setup_polygon(polygon, id, params, out);
-    for (size_t i = first; i < out.size(); ++i)
-        for (int64_t& bias : out[i].bias) bias = -1;
-    return added;
+    return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
+        for (int64_t& bias : t.bias) bias = -1;
+    });
 }
 
 // "float edge functions": the edge equations are set up in float (24-bit mantissa), so c = dy * x - dx * y is
 // rounded; two triangles sharing an edge round it differently and the edge cracks or doubles.
 int setup_with_float_edges(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
                            std::vector<TriangleSetup>& out) {
-    const size_t first = out.size();
-    const int added = setup_polygon(polygon, id, params, out);
-    for (size_t k = first; k < out.size(); ++k) {
-        TriangleSetup& t = out[k];
+    return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
         for (int i = 0; i < 3; ++i) {
             const int s = (i + 1) % 3, e = (i + 2) % 3;
             const float dx = static_cast<float>(t.x[e] - t.x[s]), dy = static_cast<float>(t.y[e] - t.y[s]);
@@ -121,24 +124,19 @@ int setup_with_float_edges(const ClippedPolygon& polygon, uint32_t id, const Set
             t.b[i] = std::llround(static_cast<double>(dx));
             t.c[i] = std::llround(static_cast<double>(c));
         }
-    }
-    return added;
+    });
 }
 
 // "fill rule inverted (bottom-right)": samples on an edge belong to the triangle when the edge is a bottom or right
 // edge. Still watertight, but every shared sample goes to the other triangle.
 int setup_with_bottom_right_rule(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
                                  std::vector<TriangleSetup>& out) {
-    const size_t first = out.size();
-    const int added = setup_polygon(polygon, id, params, out);
-    for (size_t k = first; k < out.size(); ++k) {
-        TriangleSetup& t = out[k];
+    return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
         for (int i = 0; i < 3; ++i) {
             const int s = (i + 1) % 3, e = (i + 2) % 3;
             t.bias[i] = is_top_left(t.x[e] - t.x[s], t.y[e] - t.y[s]) ? -1 : 0;
         }
-    }
-    return added;
+    });
 }
 
 // "sub-pixel triangles discarded (det < 1)": triangles smaller than one square pixel are thrown away.
