@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/temp_dir.h"
+
 #include "apps/cli.h"
 
 namespace raster::seed_test {
@@ -21,39 +23,10 @@ namespace fs = std::filesystem;
 
 inline fs::path corpus(const std::string& relative) { return fs::path(RASTER_SOURCE_DIR) / "corpus" / relative; }
 
-// A fresh folder, removed with everything in it at the end of the test.
-class TempDir {
+// A fresh folder that can also take a copy of a corpus folder, so outputs written beside the inputs land in it.
+class TempDir : public test_support::TempDir {
 public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "raster_seed_test_XXXXXX").string();
-        if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-        path_ = pattern;
-    }
-    ~TempDir() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-
-    const fs::path& path() const { return path_; }
-    fs::path operator/(const std::string& name) const { return path_ / name; }
-
-    // Copies every file of a corpus folder in, so outputs written beside the inputs land here.
-    void copy_corpus(const std::string& folder) const {
-        for (const auto& entry : fs::directory_iterator(corpus(folder)))
-            fs::copy_file(entry.path(), path_ / entry.path().filename(), fs::copy_options::overwrite_existing);
-    }
-
-    fs::path write(const std::string& name, const std::string& text) const {
-        const fs::path file = path_ / name;
-        fs::create_directories(file.parent_path());
-        std::ofstream(file, std::ios::binary) << text;
-        return file;
-    }
-
-private:
-    fs::path path_;
+    void copy_corpus(const std::string& folder) const { copy_files_of(corpus(folder)); }
 };
 
 inline std::string read_text(const fs::path& path) {
