@@ -147,14 +147,16 @@ public:
         // The same stages render() ran, recomputed here to know each triangle's polygon and setups.
         const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(settings_.shading));
         const ClipVolume volume{scene.camera.near, scene.camera.far};
-        const SetupParams params{settings_.width, settings_.height, settings_.snap_bits, settings_.cull_backfaces};
+        const SetupParams params{settings_.width, settings_.height, settings_.snap_bits};
         triangles_.resize(geometry.triangles.size());
         for (size_t t = 0; t < geometry.triangles.size(); ++t) {
             CheckedTriangle& checked = triangles_[t];
             const TriangleIndices& v = geometry.triangles[t];
             checked.polygon = clip_triangle(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]], volume);
             checked.first_setup = setups_.size();
-            setup_polygon(checked.polygon, static_cast<uint32_t>(t), params, setups_);
+            const bool culled = settings_.cull_backfaces &&
+                                !faces_front(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]]);
+            if (!culled) setup_polygon(checked.polygon, static_cast<uint32_t>(t), params, setups_);
             checked.end_setup = setups_.size();
             if (checked.polygon.count == 0) continue;
             checked.min_x = checked.min_y = std::numeric_limits<double>::infinity();

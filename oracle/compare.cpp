@@ -35,6 +35,7 @@ const char* to_string(SampleClass c) {
         case SampleClass::edge_band: return "edge_band";
         case SampleClass::depth_tie: return "depth_tie";
         case SampleClass::clip_boundary: return "clip_boundary";
+        case SampleClass::facing: return "facing";
         case SampleClass::visibility: return "visibility";
         case SampleClass::barycentrics: return "barycentrics";
         case SampleClass::depth: return "depth";
@@ -48,7 +49,8 @@ SampleEntry sample_entry(const VisibilityBuffer& buffer, size_t index) {
 }
 
 uint64_t ComparisonCounts::ambiguous_total() const {
-    return count(SampleClass::edge_band) + count(SampleClass::depth_tie) + count(SampleClass::clip_boundary);
+    return count(SampleClass::edge_band) + count(SampleClass::depth_tie) + count(SampleClass::clip_boundary) +
+           count(SampleClass::facing);
 }
 
 uint64_t ComparisonCounts::genuine_total() const {
@@ -64,8 +66,9 @@ AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint3
     const double depth_rounding = view_depth_rounding(polygon.relative_depth_error);
     if (!range.bounded || !std::isfinite(bary_rounding) || !std::isfinite(depth_rounding))
         return {glm::dvec3(kInfinity), kInfinity};
-    // Both renderers round: twice the per-renderer rounding.
-    tolerance.bary = (range.max_bary - range.min_bary) + glm::dvec3(2.0 * bary_rounding);
+    // Both renderers round: twice the per-renderer rounding; and Embree's own evaluation error.
+    tolerance.bary = (range.max_bary - range.min_bary) + glm::dvec3(2.0 * bary_rounding) +
+                     reference.embree_barycentric_error(id, screen);
     tolerance.view_depth = (range.max_view_depth - range.min_view_depth) + 2.0 * depth_rounding * range.max_view_depth;
     return tolerance;
 }
@@ -125,6 +128,9 @@ SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2
         if (!is_triangle(reference, id)) return SampleClass::visibility;
         involved[count++] = id;
     }
+    // A triangle whose facing is uncertain may be missing altogether, whatever else holds at the sample.
+    for (int i = 0; i < count; ++i)
+        if (reference.polygon(involved[i]).facing_uncertain) return SampleClass::facing;
     for (int i = 0; i < count; ++i)
         if (on_clip_boundary(reference, involved[i], screen)) return SampleClass::clip_boundary;
     for (int i = 0; i < count; ++i)

@@ -22,14 +22,15 @@ enum class SampleClass : uint8_t {
     edge_band,      // ambiguous: within the radius of an edge of a triangle involved
     depth_tie,      // ambiguous: both triangles cover the sample and their depths are within the tie bound
     clip_boundary,  // ambiguous: the sample is where a triangle involved meets the near or far plane
+    facing,         // ambiguous: culling is on and a triangle involved is too close to edge-on to call its facing
     visibility,     // genuine: a different triangle (or none) outside every allowance
     barycentrics,   // genuine: same triangle, barycentrics apart by more than their bound
     depth,          // genuine: same triangle, view depths apart by more than their bound
     color,          // genuine: same triangle and barycentrics, but raster's shading gives another colour
 };
-inline constexpr int kSampleClassCount = 8;
+inline constexpr int kSampleClassCount = 9;
 const char* to_string(SampleClass c);  // "agree", "edge_band", ..., "color"
-inline bool is_ambiguous(SampleClass c) { return c >= SampleClass::edge_band && c <= SampleClass::clip_boundary; }
+inline bool is_ambiguous(SampleClass c) { return c >= SampleClass::edge_band && c <= SampleClass::facing; }
 inline bool is_genuine(SampleClass c) { return c >= SampleClass::visibility; }
 
 // One sample of a visibility buffer.

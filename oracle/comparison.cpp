@@ -91,7 +91,8 @@ nlohmann::json comparison_json(const Comparison& c) {
             {"ambiguous",
              {{"edge_band", count(SampleClass::edge_band)},
               {"depth_tie", count(SampleClass::depth_tie)},
-              {"clip_boundary", count(SampleClass::clip_boundary)}}},
+              {"clip_boundary", count(SampleClass::clip_boundary)},
+              {"facing", count(SampleClass::facing)}}},
             {"ambiguous_total", c.counts.ambiguous_total()},
             {"genuine",
              {{"visibility", count(SampleClass::visibility)},
@@ -111,13 +112,13 @@ std::string comparison_summary(const Comparison& c) {
     std::snprintf(text, sizeof text,
                   "%s: %dx%d, %d samples per pixel, oracle %s\n"
                   "  agree      %llu\n"
-                  "  ambiguous  %llu (edge band %llu, depth tie %llu, clip boundary %llu)\n"
+                  "  ambiguous  %llu (edge band %llu, depth tie %llu, clip boundary %llu, facing %llu)\n"
                   "  genuine    %llu (visibility %llu, barycentrics %llu, depth %llu, colour %llu)\n"
                   "  max colour error %d/255 on agreeing samples\n"
                   "  raster %.1f ms, oracle %.1f ms, compare %.1f ms\n",
                   c.scene.c_str(), c.width, c.height, c.samples, to_string(c.mode), count(SampleClass::agree),
                   static_cast<unsigned long long>(c.counts.ambiguous_total()), count(SampleClass::edge_band),
-                  count(SampleClass::depth_tie), count(SampleClass::clip_boundary),
+                  count(SampleClass::depth_tie), count(SampleClass::clip_boundary), count(SampleClass::facing),
                   static_cast<unsigned long long>(c.counts.genuine_total()), count(SampleClass::visibility),
                   count(SampleClass::barycentrics), count(SampleClass::depth), count(SampleClass::color),
                   c.max_color_error, c.raster_ms, c.oracle_ms, c.compare_ms);

@@ -40,7 +40,7 @@ struct Comparison {
 // sample positions and shading. The scene must be valid (validate_scene). Throws OracleError if Embree fails.
 Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, const PipelineStages& stages = {});
 
-// {scene, width, height, samples, oracle_mode, agree, ambiguous: {edge_band, depth_tie, clip_boundary},
+// {scene, width, height, samples, oracle_mode, agree, ambiguous: {edge_band, depth_tie, clip_boundary, facing},
 //  ambiguous_total, genuine: {visibility, barycentrics, depth, color}, genuine_total, max_color_error,
 //  raster_ms, oracle_ms, compare_ms}
 nlohmann::json comparison_json(const Comparison& comparison);

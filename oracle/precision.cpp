@@ -5,6 +5,8 @@
 #include <limits>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 namespace raster::oracle {
 
@@ -22,6 +24,52 @@ glm::dvec2 screen_error(const glm::dvec4& clip, const glm::dvec4& error, int wid
     if (!(denominator > 0.0)) return glm::dvec2(std::numeric_limits<double>::infinity());
     return {0.5 * width * (error.x + std::fabs(clip.x / clip.w) * error.w) / denominator,
             0.5 * height * (error.y + std::fabs(clip.y / clip.w) * error.w) / denominator};
+}
+
+namespace {
+
+// dot(|a| x| |b|, |d|): the magnitude of dot(cross(a, b), d) summed term by term.
+double cross_dot_magnitude(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& d) {
+    const glm::dvec3 x = glm::abs(a), y = glm::abs(b), z = glm::abs(d);
+    return (x.y * y.z + x.z * y.y) * z.x + (x.z * y.x + x.x * y.z) * z.y + (x.x * y.y + x.y * y.x) * z.z;
+}
+
+}  // namespace
+
+glm::dvec3 embree_barycentric_error(const glm::dvec3 v[3], const glm::dvec3& direction, const glm::dvec3& bary) {
+    // U pairs with v1 (its edge runs v0 -> v2), V with v2 (edge v1 -> v0), W with v0 (edge v2 -> v1).
+    const double m_u = cross_dot_magnitude(v[2] - v[0], v[2] + v[0], direction);
+    const double m_v = cross_dot_magnitude(v[0] - v[1], v[0] + v[1], direction);
+    const double m_w = cross_dot_magnitude(v[1] - v[2], v[1] + v[2], direction);
+    // U + V + W = 2 dot(cross(v1 - v0, v2 - v0), D) exactly (the vertex cross products telescope).
+    const double s = 2.0 * std::fabs(glm::dot(glm::cross(v[1] - v[0], v[2] - v[0]), direction));
+    const double e_s = float_gamma(kEmbreeEdgeRoundings + kEmbreeSumRoundings) * (m_u + m_v + m_w);
+    if (!(e_s < s)) return glm::dvec3(std::numeric_limits<double>::infinity());
+    const double g = float_gamma(kEmbreeEdgeRoundings), ratio = float_gamma(kEmbreeRatioRoundings);
+    const double u = std::fabs(bary.y), w = std::fabs(bary.z);
+    const double error_u = (g * m_u + u * e_s) / (s - e_s) + ratio * u;
+    const double error_v = (g * m_v + w * e_s) / (s - e_s) + ratio * w;
+    const double error_first = error_u + error_v + float_gamma(kOracleBarycentricRoundings) * (1.0 + u + w);
+    return {error_first, error_u, error_v};
+}
+
+double facing_uncertainty(const glm::dvec4 clip[3], const glm::dvec4 error[3]) {
+    double exact = 1.0, moved = 1.0, moved_sum_norm = 1.0;
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec3 row(clip[i].x, clip[i].y, clip[i].w), row_error(error[i].x, error[i].y, error[i].w);
+        exact *= glm::length(row);
+        moved *= glm::length(row) + glm::length(row_error);
+        moved_sum_norm *= std::fabs(row.x) + std::fabs(row.y) + std::fabs(row.z) + row_error.x + row_error.y + row_error.z;
+    }
+    constexpr double kDoubleUnitRoundoff = 0x1p-53;
+    const double double_gamma = kFacingDoubleRoundings * kDoubleUnitRoundoff / (1.0 - kFacingDoubleRoundings * kDoubleUnitRoundoff);
+    return (moved - exact) + double_gamma * moved_sum_norm;
+}
+
+bool facing_is_uncertain(const glm::dvec4 clip[3], const glm::dvec4 error[3]) {
+    const glm::dvec3 a(clip[0].x, clip[0].y, clip[0].w), b(clip[1].x, clip[1].y, clip[1].w), c(clip[2].x, clip[2].y, clip[2].w);
+    const double determinant = glm::dot(a, glm::cross(b, c));
+    return !(std::fabs(determinant) > facing_uncertainty(clip, error));
 }
 
 double relative_depth_error(double w, double w_error) {

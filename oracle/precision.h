@@ -5,6 +5,7 @@
 #pragma once
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 namespace raster::oracle {
@@ -102,13 +103,48 @@ double reversed_z_error(const glm::dvec4& clip, const glm::dvec4& error);
 // Two surfaces TIE at a sample when their reversed-Z intervals over the r-square (corner extremes, widened by each
 // triangle's reversed-Z error) overlap: then either renderer may legitimately show either.
 
+// EMBREE'S BARYCENTRICS. The backward-error view of Embree's test (section 2) holds edge by edge, not for the
+// barycentrics: Embree (robust mode: the Pluecker test) computes, with the ray origin at the eye and vertices
+// v0, v1, v2 relative to it, U = dot(cross(v2 - v0, v2 + v0), D) and likewise V (edge v0 -> v1) and W, each with
+// its own rounding, then u = U * rcp(U + V + W) and v = V * rcp(U + V + W). With the magnitude
+//     M_U = dot(|v2 - v0| x| |v2 + v0|, |D|)        (x|: the cross product's two products added, not subtracted)
+// the difference (1), sum (1), cross product (2), dot product (3) and the float ray direction (1) bound
+// |fl(U) - U| <= gamma_8 M_U =: E_U. The sum adds 2 roundings: E_S = gamma_10 (M_U + M_V + M_W). Then
+//     |fl(u) - u| <= (E_U + |u| E_S) / (|S| - E_S) + gamma_7 |u|
+// where S = U + V + W is exact and gamma_7 covers Embree's reciprocal (an estimate refined by one Newton step:
+// 6 roundings) and the product (1); the oracle then forms 1 - u - v in float (2). For a well-shaped triangle this
+// is a few float roundings; for a needle, S (twice its area, seen along D) is small next to M and the error grows
+// as M / S: raster's snapped barycentrics move with the snap (the spreads), Embree's with this.
+inline constexpr int kEmbreeEdgeRoundings = 8;
+inline constexpr int kEmbreeSumRoundings = 2;
+inline constexpr int kEmbreeRatioRoundings = 7;
+inline constexpr int kOracleBarycentricRoundings = 2;
+// The bound per component (1 - u - v, u, v), for view-space vertices `v`, ray direction `direction` and exact
+// barycentrics `bary` at the sample; infinite when E_S >= |S| (Embree's answer is then unconstrained).
+glm::dvec3 embree_barycentric_error(const glm::dvec3 v[3], const glm::dvec3& direction, const glm::dvec3& bary);
+
 // --- 6. Clip boundary ----------------------------------------------------------------------------------------
 // raster's near and far clip edges sit where its float w crosses the plane: within the triangle's largest
 // clip-space w error (absolute, the DEPTH ERROR) of the exact plane, and then are snapped (r). A sample is on
 // the clip boundary of a triangle when the triangle's view-depth interval over the r-square, widened by the depth
 // error, contains near or far, and the r-square reaches the triangle (every barycentric's corner maximum >= 0).
 
-// --- 7. Colour -----------------------------------------------------------------------------------------------
+// --- 7. Facing ----------------------------------------------------------------------------------------------
+// With back-face culling, raster keeps a triangle when det[x y w] of its three float clip-space vertices is > 0
+// (raster/setup.h faces_front); the oracle decides from the sign of the same determinant's view-space counterpart
+// (a linear map of it). Each renderer's rows are the exact rows c_i moved by d_i with |d_i| <= e_i componentwise
+// (section 2). The determinant is multilinear in its rows, so det(C + D) - det(C) is a sum of determinants each
+// with at least one row taken from D; Hadamard bounds each by the product of its rows' 2-norms, and the sum is
+//     |det(C + D) - det(C)| <= prod_i (|c_i| + |e_i|) - prod_i |c_i|            (2-norms of (x, y, w))
+// raster evaluates its determinant in double from float inputs (exact 2x2 products, then 4 roundings):
+// gamma_4(double) prod_i |c_i + e_i|_1 bounds that. Where |det(C)| is within the sum, the renderers may decide the
+// triangle's facing differently, and every disagreement it is involved in is ambiguous (FACING).
+inline constexpr int kFacingDoubleRoundings = 4;
+double facing_uncertainty(const glm::dvec4 clip[3], const glm::dvec4 error[3]);
+// True when the exact clip-space vertices' determinant is within facing_uncertainty of 0.
+bool facing_is_uncertain(const glm::dvec4 clip[3], const glm::dvec4 error[3]);
+
+// --- 8. Colour -----------------------------------------------------------------------------------------------
 // Both renderers' colours come from the same shader applied to (triangle, barycentrics). On agreeing samples, the
 // colour raster's pipeline gives at raster's own (triangle, barycentrics) must equal, byte for byte, what the
 // reference shader gives at the same inputs: the same function of the same inputs is deterministic, so the

@@ -141,6 +141,11 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene&
             ReferencePolygon& out = polygons_[id];
             const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
             out.culled = scene.settings.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
+            if (scene.settings.cull_backfaces) {
+                const glm::dvec4 clip[3] = {polygon[0].clip, polygon[1].clip, polygon[2].clip};
+                const glm::dvec4 error[3] = {polygon[0].error, polygon[1].error, polygon[2].error};
+                out.facing_uncertain = facing_is_uncertain(clip, error);
+            }
             out.first = static_cast<uint32_t>(screen_.size());
             const std::vector<ClipVertex> original = polygon;
             const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_);
@@ -188,6 +193,15 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
     hit.reversed_z = (projection_exact_[2][2] * -t + projection_exact_[3][2]) / t;  // clip z / clip w at view z = -t
     hit.bary = {1.0 - u - v, u, v};
     return hit;
+}
+
+glm::dvec3 ReferenceGeometry::embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const {
+    const ViewTriangle& tri = triangles_[id];
+    const glm::dvec3 vertices[3] = {tri.a, tri.a + tri.edge1, tri.a + tri.edge2};
+    const glm::dvec3 direction = view_ray_direction(projection_, ndc_from_screen(screen, width_, height_));
+    const ExactHit exact = hit(id, screen);
+    if (!exact.valid) return glm::dvec3(std::numeric_limits<double>::infinity());
+    return oracle::embree_barycentric_error(vertices, direction, exact.bary);
 }
 
 SquareRange ReferenceGeometry::range_around(uint32_t id, const glm::dvec2& screen, double half_side) const {

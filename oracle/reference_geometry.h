@@ -23,6 +23,7 @@ struct ReferencePolygon {
     uint32_t first = 0;             // its vertices and edge kinds start here
     uint32_t count = 0;             // 0 when nothing of it is inside the view volume
     bool culled = false;            // back-facing in a scene that culls back faces: no renderer may show it
+    bool facing_uncertain = false;  // culling on, and its facing is within the float error (precision.h, 7)
     double radius = 0;              // r: snap + float screen error of its vertices, px, max norm
     double depth_error = 0;         // largest absolute w error of its clipped vertices (clip boundary)
     double relative_depth_error = 0;  // largest relative 1/w error of its clipped vertices
@@ -62,6 +63,8 @@ public:
 
     ExactHit hit(uint32_t id, const glm::dvec2& screen) const;
     SquareRange range_around(uint32_t id, const glm::dvec2& screen, double half_side) const;
+    // How far Embree's barycentrics for the ray through `screen` can be from exact (precision.h, section 5).
+    glm::dvec3 embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const;
 
     // Max-norm distance from `screen` to the polygon's boundary (every edge, whatever made it); infinite when the
     // polygon is empty.

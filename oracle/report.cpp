@@ -103,7 +103,8 @@ std::string report_html(const std::vector<ReportRow>& rows) {
         html += "<tr><td>agree</td><td>" + number(c["agree"]) + "</td></tr>";
         html += "<tr><td>ambiguous</td><td>" + number(c["ambiguous_total"]) + "</td><td>edge band " +
                 number(c["ambiguous"]["edge_band"]) + ", depth tie " + number(c["ambiguous"]["depth_tie"]) +
-                ", clip boundary " + number(c["ambiguous"]["clip_boundary"]) + "</td></tr>";
+                ", clip boundary " + number(c["ambiguous"]["clip_boundary"]) + ", facing " +
+                number(c["ambiguous"].value("facing", 0)) + "</td></tr>";
         html += "<tr><td><b>genuine</b></td><td><b>" + number(c["genuine_total"]) + "</b></td><td>visibility " +
                 number(c["genuine"]["visibility"]) + ", barycentrics " + number(c["genuine"]["barycentrics"]) +
                 ", depth " + number(c["genuine"]["depth"]) + ", colour " + number(c["genuine"]["color"]) + "</td></tr>";

@@ -14,6 +14,7 @@ namespace {
 const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
 constexpr const char* kMovedNear = "near_crossing_with_near_2";
 constexpr const char* kAttenuation = "attenuating_light";
+constexpr const char* kCulledCube = "flat_cube_with_back_faces_culled";
 
 Scene scene_of(const std::string& name) {
     if (name == kAttenuation) {
@@ -35,9 +36,11 @@ Scene scene_of(const std::string& name) {
         scene.lights.push_back(light);
         return scene;
     }
-    Scene scene = load_scene(kCorpus + (name == kMovedNear ? std::string("near_crossing") : name) + ".yaml");
+    const std::string file = name == kMovedNear ? "near_crossing" : name == kCulledCube ? "flat_cube" : name;
+    Scene scene = load_scene(kCorpus + file + ".yaml");
     scene.settings.samples = 1;
     if (name == kMovedNear) scene.camera.near = 2.0f;
+    if (name == kCulledCube) scene.settings.cull_backfaces = true;
     return scene;
 }
 
@@ -61,6 +64,7 @@ std::vector<std::string> oracle_checks() {
     std::sort(names.begin(), names.end());
     names.push_back(kMovedNear);
     names.push_back(kAttenuation);
+    names.push_back(kCulledCube);
     for (std::string& name : names) name = "Oracle." + name;
     return names;
 }

@@ -71,7 +71,7 @@ reference::Point snapped(const Frame& frame, const glm::vec4& clip) {
 std::vector<TriangleSetup> set_up(const Implementation& impl, const Frame& frame,
                                   const std::vector<ClipTriangle>& triangles) {
     std::vector<TriangleSetup> setups;
-    const SetupParams params{frame.width, frame.height, frame.snap_bits, false};
+    const SetupParams params{frame.width, frame.height, frame.snap_bits};
     for (size_t i = 0; i < triangles.size(); ++i) {
         const ClipTriangle& t = triangles[i];
         const ClippedPolygon polygon = impl.stages.clip(t.v[0], t.v[1], t.v[2], frame.volume);

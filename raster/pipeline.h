@@ -20,6 +20,7 @@ namespace raster {
 // The stages render() runs, defaulting to the real ones. A test replaces one to see which checks notice.
 struct PipelineStages {
     TransformedScene (*vertex)(const Scene&, const VertexStageNeeds&) = run_vertex_stage;  // camera matrices
+    bool (*faces_front)(const glm::vec4&, const glm::vec4&, const glm::vec4&) = raster::faces_front;  // culling
     ClippedPolygon (*clip)(const glm::vec4&, const glm::vec4&, const glm::vec4&, const ClipVolume&) = clip_triangle;
     int (*setup)(const ClippedPolygon&, uint32_t, const SetupParams&, std::vector<TriangleSetup>&) = setup_polygon;
     void (*rasterize)(const std::vector<TriangleSetup>&, const RasterParams&, VisibilityBuffer&) = raster::rasterize;

@@ -40,7 +40,7 @@ std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const Transforme
     // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
     const ClipVolume volume{scene.camera.near, scene.camera.far};
     const RenderSettings& settings = scene.settings;
-    const SetupParams setup_params{settings.width, settings.height, settings.snap_bits, settings.cull_backfaces};
+    const SetupParams setup_params{settings.width, settings.height, settings.snap_bits};
     const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
     std::vector<std::vector<TriangleSetup>> chunk_setups(chunks);
     std::vector<size_t> chunk_clipped(chunks, 0);
@@ -51,6 +51,9 @@ std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const Transforme
         out.reserve(end - begin);
         for (size_t tri = begin; tri < end; ++tri) {
             const TriangleIndices& v = geometry.triangles[tri];
+            if (settings.cull_backfaces &&
+                !stages.faces_front(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]]))
+                continue;
             const ClippedPolygon polygon =
                 stages.clip(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]], volume);
             chunk_clipped[chunk] += polygon.clipped;

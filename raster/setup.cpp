@@ -30,6 +30,12 @@ inline int64_t snap(double screen, double snap_scale, int shift, int64_t extent)
 
 }  // namespace
 
+bool faces_front(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
+    const double ax = a.x, ay = a.y, aw = a.w, bx = b.x, by = b.y, bw = b.w, cx = c.x, cy = c.y, cw = c.w;
+    const double determinant = ax * (by * cw - bw * cy) - ay * (bx * cw - bw * cx) + aw * (bx * cy - by * cx);
+    return determinant > 0.0;
+}
+
 int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const SetupParams& params,
                   std::vector<TriangleSetup>& out) {
     if (polygon.count < 3) return 0;
@@ -57,7 +63,6 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Set
         // NDC, see conventions.h).
         int64_t area2 = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
         if (area2 == 0) continue;  // covers no sample under the fill rule
-        if (area2 > 0 && params.cull_backfaces) continue;
         if (area2 < 0) {
             std::swap(v[1], v[2]);
             area2 = -area2;

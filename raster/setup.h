@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "raster/clip.h"
 
@@ -15,7 +16,6 @@ struct SetupParams {
     int width = 0;
     int height = 0;
     int snap_bits = 8;
-    bool cull_backfaces = false;
 };
 
 // One screen-space triangle, ready to rasterize. Coordinates are on the grid of 1/2^fixed_bits pixel.
@@ -35,9 +35,16 @@ struct TriangleSetup {
 };
 
 // Projects, snaps and triangulates a clipped polygon (as a fan from its first vertex), appending one setup per
-// non-degenerate, non-culled triangle to `out`. Returns the number appended.
+// non-degenerate triangle to `out` (back-face culling is faces_front's, before clipping). Returns the number appended.
 int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const SetupParams& params,
                   std::vector<TriangleSetup>& out);
+
+// Back-face culling is decided once per scene triangle, before clipping, from its clip-space vertices: the sign of
+// det[x y w] (rows a, b, c) is that of the triangle's NDC area, and stays that of every part of it in front of the
+// eye (clipped vertices are positive-winding combinations of a, b, c). > 0 is front-facing (counter-clockwise in
+// NDC, see conventions.h). Deciding after snapping, per fan piece, would let a thin piece of a front face flip.
+// Computed in double from float inputs: each 2x2 product is exact, so only 4 roundings remain.
+bool faces_front(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c);
 
 // True when the directed edge (dx, dy) is a top or left edge for a triangle with E > 0 inside (y down).
 inline bool is_top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }

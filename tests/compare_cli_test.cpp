@@ -45,7 +45,7 @@ TEST(CompareCli, writesTheJsonAndTheDiffMapAndExitsZeroWithoutGenuineDisagreemen
     for (const char* key : {"scene", "samples", "agree", "ambiguous", "genuine", "genuine_total", "max_color_error",
                             "raster_ms", "oracle_ms"})
         EXPECT_TRUE(json.contains(key)) << key;
-    for (const char* key : {"edge_band", "depth_tie", "clip_boundary"}) EXPECT_TRUE(json["ambiguous"].contains(key)) << key;
+    for (const char* key : {"edge_band", "depth_tie", "clip_boundary", "facing"}) EXPECT_TRUE(json["ambiguous"].contains(key)) << key;
     for (const char* key : {"visibility", "barycentrics", "depth", "color"}) EXPECT_TRUE(json["genuine"].contains(key)) << key;
     EXPECT_EQ(json["samples"], 4);
     EXPECT_EQ(json["genuine_total"], 0);

@@ -19,6 +19,7 @@ struct Caught {
     const char* mutant;
     const char* scene;
     float near = 0.0f;  // when > 0, the scene's near plane is moved there so that the bug's effect is on screen
+    bool cull = false;  // back-face culling on
 };
 
 // The bugs the oracle must catch, each with a corpus scene that shows it (compared at 1 sample per pixel).
@@ -33,12 +34,14 @@ const Caught kCaught[] = {
     {"depth buffer initialised with numeric_limits<float>::min()", "flat_cube.yaml"},
     {"wrong sample positions", "single_triangle.yaml"},
     {"integer-divided aspect ratio", "perspective_quad.yaml"},
+    {"front faces culled (winding inverted)", "teapot.yaml", 0.0f, true},
 };
 
 Comparison compare_corpus(const Caught& c, const PipelineStages& stages) {
     Scene scene = load_scene(kCorpus + c.scene);
     scene.settings.samples = 1;
     if (c.near > 0.0f) scene.camera.near = c.near;
+    scene.settings.cull_backfaces = c.cull;
     return compare_scene(scene, ComparisonOptions{}, stages);
 }
 
@@ -54,7 +57,8 @@ TEST(OracleCatchesMutants, eachListedBugGivesGenuineDisagreementsWhereTheCorrect
     std::string table = "\n  mutant                                                      scene                  "
                         "genuine  (correct)  reasons\n";
     for (const Caught& c : kCaught) {
-        const std::string scene = std::string(c.scene) + (c.near > 0 ? ", near " + std::to_string(int(c.near)) : "");
+        const std::string scene = std::string(c.scene) + (c.near > 0 ? ", near " + std::to_string(int(c.near)) : "") +
+                                  (c.cull ? ", culled" : "");
         if (!correct.count(scene)) correct[scene] = compare_corpus(c, PipelineStages{}).counts.genuine_total();
         EXPECT_EQ(correct[scene], 0u) << scene;
         const Comparison faulty = compare_corpus(c, mutants::mutant(c.mutant).stages);

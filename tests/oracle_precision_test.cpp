@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "raster/setup.h"
+
 namespace raster::oracle {
 namespace {
 
@@ -99,6 +101,55 @@ TEST(Precision, reversedZErrorIsTheDerivativeOfZOverW) {
     const double exact = clip.z / clip.w, worst = (clip.z + error.z) / (clip.w - error.w);
     EXPECT_LE(std::fabs(worst - exact), reversed_z_error(clip, error));
     EXPECT_GT(std::fabs(worst - exact), 0.99 * (reversed_z_error(clip, error) - float_gamma(kReversedZRoundings)));
+}
+
+
+// Rows a = (1, 0, 1), b = (0, 1, 1), c = (x, 0, 1) in (x, y, w): det = 1 - x.
+struct FacingRows {
+    glm::dvec4 clip[3];
+    glm::dvec4 error[3];
+    explicit FacingRows(double x, double e) {
+        clip[0] = {1, 0, 0, 1}, clip[1] = {0, 1, 0, 1}, clip[2] = {x, 0, 0, 1};
+        for (glm::dvec4& r : error) r = glm::dvec4(e, e, 0, e);
+    }
+};
+
+TEST(Precision, facingIsUncertainExactlyWhileTheDeterminantIsWithinTheBound) {
+    const double e = 1e-6;
+    const double bound = facing_uncertainty(FacingRows(1.0, e).clip, FacingRows(1.0, e).error);
+    ASSERT_GT(bound, 0.0);
+    // The bound hardly changes as x moves by about itself, so det = 1 - x just inside and outside it:
+    const FacingRows inside(1.0 - bound * (1 - 1e-3), e), outside(1.0 - bound * (1 + 1e-3), e);
+    EXPECT_TRUE(facing_is_uncertain(inside.clip, inside.error));
+    EXPECT_FALSE(facing_is_uncertain(outside.clip, outside.error));
+    // Either sign: a back face just as close to edge-on is uncertain as well.
+    const FacingRows behind(1.0 + bound * (1 - 1e-3), e);
+    EXPECT_TRUE(facing_is_uncertain(behind.clip, behind.error));
+}
+
+TEST(Precision, aVertexErrorWithinTheBoundFlipsRastersFacingDecision) {
+    // Not a loose bound for nothing: moving the rows by less than their error turns a front face into a back face in
+    // raster's own decision (raster/setup.h faces_front), so the comparator has to allow it.
+    const double e = 1e-6;
+    const FacingRows exact(1.0 - 1e-6, e);  // det = 1e-6 > 0: front-facing
+    ASSERT_TRUE(faces_front(glm::vec4(exact.clip[0]), glm::vec4(exact.clip[1]), glm::vec4(exact.clip[2])));
+    ASSERT_TRUE(facing_is_uncertain(exact.clip, exact.error));
+    const glm::dvec4 moved_c = exact.clip[2] + glm::dvec4(e, 0, 0, -e) * 0.99;  // within e componentwise
+    EXPECT_FALSE(faces_front(glm::vec4(exact.clip[0]), glm::vec4(exact.clip[1]), glm::vec4(moved_c)));
+}
+
+TEST(Precision, rastersFacingDecisionIsTheSignOfTheNdcArea) {
+    // Counter-clockwise in NDC (y up) is front-facing; a positive w scale of any vertex changes nothing.
+    const glm::vec4 a(-1, -1, 0, 1), b(1, -1, 0, 1), c(0, 1, 0, 1);
+    EXPECT_TRUE(faces_front(a, b, c));
+    EXPECT_FALSE(faces_front(a, c, b));
+    EXPECT_TRUE(faces_front(a * 3.0f, b, c * 0.5f));
+    // A triangle reaching behind the eye (w < 0 at one vertex) has the facing of its visible part, e.g. of the
+    // piece cut at p on the edge from b to the vertex behind (p in NDC: (1.5, -0.5); the piece is counter-clockwise).
+    const glm::vec4 behind(0, 2, 0, -1), p = 0.75f * b + 0.25f * behind;  // w = 0.5
+    EXPECT_TRUE(faces_front(a, b, p));
+    EXPECT_TRUE(faces_front(a, b, behind));
+    EXPECT_FALSE(faces_front(b, a, behind));
 }
 
 }  // namespace

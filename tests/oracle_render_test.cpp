@@ -2,12 +2,15 @@
 // far clipping, back-face culling, and the same output for any thread count.
 #include "oracle/oracle.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include <gtest/gtest.h>
 
+#include "oracle/precision.h"
 #include "oracle/reference_geometry.h"
 #include "raster/camera_rays.h"
+#include "raster/conventions.h"
 #include "raster/render.h"
 #include "raster/scene_loader.h"
 #include "tests/oracle_test_scenes.h"
@@ -137,6 +140,46 @@ TEST(Oracle, fastModeSeesTheSameSurfacesAwayFromEdges) {
     EXPECT_GT(same, robust_buffer.size() * 999 / 1000);
     EXPECT_STREQ(to_string(OracleMode::fast), "fast");
     EXPECT_STREQ(to_string(OracleMode::robust), "robust");
+}
+
+// A needle (two vertices 0.02 apart, the third 28 away; found by the differential fuzzer): Embree's barycentrics
+// drift from exact by more than a float rounding, because each of its edge values rounds on its own and their sum
+// (twice the needle's tiny area) divides them. The derived bound (precision.h, "Embree's barycentrics") holds on
+// every sample, and is needed: some samples are off by more than the float roundings allowed before it.
+TEST(Oracle, embreesBarycentricsOnANeedleStayWithinTheirDerivedBound) {
+    Scene scene = scene_with_triangles({{{{0x1.3ffe9p+3f, 0x1.4p+3f, 0x1.3fd8p+3f}, {10, 10, 10}, {10, -10, -10}}}},
+                                       camera_at_origin(), 17, 32, 1);
+    scene.camera.eye = {-0x1.3f464cp+3f, 0x1.aaa63p+1f, -0x1.61e1e2p+2f};
+    scene.camera.target = glm::vec3(0.0f);
+    scene.camera.up = {0x1.bdbdcp-2f, 0x1.b9c9c8p-2f, -0x1.1b1b1cp-1f};
+    scene.camera.fov_y_degrees = 0x1.bfa3a4p+5f;
+    scene.camera.near = 0x1.0624dep-10f;
+    scene.camera.far = 0x1.dcd65p+29f;
+    scene.settings.snap_bits = 12;
+    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
+    const ReferenceGeometry reference(scene, geometry);
+    const VisibilityBuffer buffer = oracle_buffer(scene);
+    const int fixed_bits = fixed_bits_for(scene.settings.snap_bits);
+    const FixedSampleOffsets offsets =
+        fixed_sample_offsets(sample_offsets(scene.settings.samples, scene.settings.pattern), fixed_bits);
+    int hits = 0, beyond_roundings = 0;
+    for (int py = 0; py < buffer.height; ++py)
+        for (int px = 0; px < buffer.width; ++px)
+            for (int s = 0; s < buffer.samples; ++s) {
+                const size_t at = buffer.index(px, py, s);
+                if (buffer.triangle[at] != 0) continue;
+                ++hits;
+                const glm::dvec2 screen = sample_screen_position(px, py, s, offsets, fixed_bits);
+                const glm::dvec3 exact = reference.hit(0, screen).bary;
+                const glm::dvec3 bound = reference.embree_barycentric_error(0, screen);
+                const glm::dvec3 error = glm::abs(glm::dvec3(buffer.bary[at]) - exact);
+                EXPECT_LE(error.x, bound.x) << px << "," << py << " sample " << s;
+                EXPECT_LE(error.y, bound.y) << px << "," << py << " sample " << s;
+                EXPECT_LE(error.z, bound.z) << px << "," << py << " sample " << s;
+                beyond_roundings += std::max({error.x, error.y, error.z}) > 2.0 * barycentric_rounding(0.0);
+            }
+    EXPECT_GT(hits, 0);
+    EXPECT_GT(beyond_roundings, 0);
 }
 
 }  // namespace

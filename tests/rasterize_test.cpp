@@ -30,7 +30,7 @@ ClippedPolygon screen_polygon(std::initializer_list<glm::dvec2> points, float w 
 
 std::vector<TriangleSetup> set_up(const std::vector<ClippedPolygon>& polygons, int snap_bits = 8) {
     std::vector<TriangleSetup> setups;
-    const SetupParams params{kSize, kSize, snap_bits, false};
+    const SetupParams params{kSize, kSize, snap_bits};
     for (size_t i = 0; i < polygons.size(); ++i) setup_polygon(polygons[i], static_cast<uint32_t>(i), params, setups);
     return setups;
 }

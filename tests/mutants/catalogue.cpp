@@ -161,6 +161,10 @@ int setup_without_y_flip(const ClippedPolygon& polygon, uint32_t id, const Setup
     return setup_polygon(flipped, id, params, out);
 }
 
+// "front faces culled (winding inverted)": culling keeps the faces turned away from the eye, so a closed mesh shows
+// its inside.
+bool faces_front_inverted(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) { return !faces_front(a, b, c); }
+
 // --- rasterize ----------------------------------------------------------------------------------------------
 
 // "affine instead of perspective-correct": attributes are interpolated linearly in screen space (every vertex
@@ -403,6 +407,8 @@ std::vector<Mutant> build_catalogue() {
     add_block("model matrix multiplied in the wrong order", "model transform chain",
               "a scale-rotate-translate chain becomes S * R * T, so scaled objects fly off",
               [](PipelineStages&, BuildingBlocks& b) { b.model_matrix = model_matrix_composed_backwards; });
+    add("front faces culled (winding inverted)", "setup", "with culling on, a closed mesh shows its inside",
+        [](PipelineStages& s) { s.faces_front = faces_front_inverted; });
     add("fill rule inverted (bottom-right)", "setup", "shared samples go to the triangle below or right of the edge",
         [](PipelineStages& s) { s.setup = setup_with_bottom_right_rule; });
     add("side planes not clipped (vertices clamped instead)", "clip",
