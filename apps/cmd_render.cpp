@@ -26,6 +26,7 @@ struct RenderFlags {
     std::optional<std::string> shading;
     std::optional<int> snap_bits;
     std::optional<std::string> cull;
+    std::optional<std::string> edges, interpolation, depth_format, clipping, hierarchical_z;
     bool alpha = false;
     std::string depth_out;
     int threads = 0;
@@ -50,6 +51,18 @@ void register_render_flags(CLI::App& app, RenderFlags& flags) {
         ->check(CLI::IsMember({"unlit", "flat", "gouraud", "phong", "blinn-phong"}));
     render->add_option("--snap-bits", flags.snap_bits, "Sub-pixel bits for vertex snapping, 1..16 (default 8)");
     render->add_option("--cull", flags.cull, "Back-face culling: none or back")->check(CLI::IsMember({"none", "back"}));
+    render->add_option("--edges", flags.edges, "Edge arithmetic: fixed (64-bit, watertight; default) or float")
+        ->check(CLI::IsMember({"fixed", "float"}));
+    render->add_option("--interpolation", flags.interpolation, "perspective (default) or affine")
+        ->check(CLI::IsMember({"perspective", "affine"}));
+    render->add_option("--depth-format", flags.depth_format,
+                       "Depth test on reversed-z float (default), float z/w, or fixed24 (24-bit z/w)")
+        ->check(CLI::IsMember({"reversed-z", "float", "fixed24"}));
+    render->add_option("--clipping", flags.clipping, "full (default) or guard-band (side planes only beyond 4x the view)")
+        ->check(CLI::IsMember({"full", "guard-band"}));
+    render->add_option("--hierarchical-z", flags.hierarchical_z,
+                       "Hierarchical-Z occlusion culling: on (default) or off; never changes a pixel")
+        ->check(CLI::IsMember({"on", "off"}));
     render->add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
     render->add_option("--depth-out", flags.depth_out,
                        "Also write a greyscale depth image (nearest white, farthest dark grey, empty black)");
@@ -67,6 +80,11 @@ void apply_overrides(const RenderFlags& flags, Scene& scene) {
     if (flags.shading) parse_shading_mode(*flags.shading, settings.shading);
     if (flags.snap_bits) settings.snap_bits = *flags.snap_bits;
     if (flags.cull) settings.cull_backfaces = *flags.cull == "back";
+    if (flags.edges) parse_edge_arithmetic(*flags.edges, settings.modes.edges);
+    if (flags.interpolation) parse_interpolation(*flags.interpolation, settings.modes.interpolation);
+    if (flags.depth_format) parse_depth_format(*flags.depth_format, settings.modes.depth);
+    if (flags.clipping) parse_clipping(*flags.clipping, settings.modes.clipping);
+    if (flags.hierarchical_z) settings.modes.hierarchical_z = *flags.hierarchical_z == "on";
     if (std::string problem = settings_problem(settings); !problem.empty()) throw InputError("", 0, 0, problem);
 }
 
@@ -76,11 +94,18 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
             {"height", scene.settings.height},
             {"samples_per_pixel", scene.settings.samples},
             {"shading", to_string(scene.settings.shading)},
+            {"snap_bits", scene.settings.snap_bits},
+            {"edges", to_string(scene.settings.modes.edges)},
+            {"interpolation", to_string(scene.settings.modes.interpolation)},
+            {"depth_format", to_string(scene.settings.modes.depth)},
+            {"clipping", to_string(scene.settings.modes.clipping)},
+            {"hierarchical_z", scene.settings.modes.hierarchical_z},
             {"triangles", stats.triangles},
             {"clipped", stats.clipped},
             {"rasterized", stats.rasterized},
             {"samples", stats.samples},
             {"covered_samples", stats.covered_samples},
+            {"hidden_blocks", stats.hidden_blocks},
             {"ms_vertex", stats.ms_vertex},
             {"ms_setup", stats.ms_setup},
             {"ms_raster", stats.ms_raster},
@@ -108,12 +133,13 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     std::filesystem::path output = flags.output;
     if (output.empty() && seed000) output = seed000->output;
     if (output.empty()) output = std::filesystem::path(flags.scene).stem().string() + ".png";
+    const bool depth_task = seed000 && seed000->task == Seed000Task::shading_depth;
     RenderOptions options;
     options.threads = flags.threads;
     options.alpha = flags.alpha;
+    options.keep_visibility = depth_task || !flags.depth_out.empty();  // the full-frame sample planes, only if read
     const RenderResult result = render(scene, options);
     try {
-        const bool depth_task = seed000 && seed000->task == Seed000Task::shading_depth;
         write_image(output, depth_task ? depth_image(result.visibility) : result.image);
         if (!flags.depth_out.empty()) write_image(flags.depth_out, depth_image(result.visibility));
     } catch (const std::exception& error) {

@@ -146,8 +146,8 @@ public:
           offsets_(fixed_sample_offsets(sample_offsets(settings_.samples, settings_.pattern), fixed_bits_)) {
         // The same stages render() ran, recomputed here to know each triangle's polygon and setups.
         const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(settings_.shading));
-        const ClipVolume volume{scene.camera.near, scene.camera.far};
-        const SetupParams params{settings_.width, settings_.height, settings_.snap_bits};
+        const ClipVolume volume = clip_volume_for(scene.camera, settings_);
+        const SetupParams params = setup_params_for(settings_);
         triangles_.resize(geometry.triangles.size());
         for (size_t t = 0; t < geometry.triangles.size(); ++t) {
             CheckedTriangle& checked = triangles_[t];

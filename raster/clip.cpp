@@ -16,10 +16,10 @@ inline double plane_distance(int plane, const glm::vec4& p, const ClipVolume& vo
     switch (plane) {
         case kNear: return w - double(volume.near);
         case kFar: return double(volume.far) - w;
-        case kLeft: return x + w;
-        case kRight: return w - x;
-        case kBottom: return y + w;
-        default: return w - y;
+        case kLeft: return x + volume.side * w;
+        case kRight: return volume.side * w - x;
+        case kBottom: return y + volume.side * w;
+        default: return volume.side * w - y;
     }
 }
 

@@ -16,6 +16,7 @@ namespace raster {
 struct ClipVolume {
     float near = 0.1f;
     float far = 100.0f;
+    double side = 1.0;  // the side planes are x, y = +-side * w: 1 clips to the viewport, > 1 is a guard band
 };
 
 // A clipped vertex: its clip-space position and its barycentric coordinates in the ORIGINAL triangle (clipping

@@ -36,13 +36,29 @@ namespace raster {
 // [0, 2^30] (vertices are clamped there). Differences of two coordinates are < 2^31 in magnitude, each product
 // in E = dx * (Py - ay) - dy * (Px - ax) is < 2^62, and the difference of two such products is < 2^63:
 // no int64 overflow is possible. Incremental stepping adds at most one such value per sample.
+//
+// Guard band (Clipping::guard_band): the side planes move out to x, y = +-g w, so snapped coordinates lie in
+// [-(g-1)/2 E, (g+1)/2 E] for an extent E (pixels << fixed_bits). With R = g E the range of differences and
+// M = (g+1)/2 E the largest magnitude, |c| <= 2 R M and |a X| + |b Y| <= 2 R M, so E < 2^63 needs R M <= 2^60:
+// g (g+1)/2 E^2 <= 2^60. guard_band_factor gives the largest g <= kGuardBand that satisfies it (at g = 1 it is
+// the argument above), so large images at 16 fixed bits fall back towards full clipping.
 inline constexpr int kMaxImageDimension = 1 << 14;
+inline constexpr double kGuardBand = 4.0;
 inline constexpr int kMinSnapBits = 1;
 inline constexpr int kMaxSnapBits = 16;
 inline constexpr int kDefaultSnapBits = 8;
 inline constexpr int kMinFixedBits = 4;
 
 inline constexpr int fixed_bits_for(int snap_bits) { return snap_bits > kMinFixedBits ? snap_bits : kMinFixedBits; }
+
+// The guard band factor g in [1, kGuardBand] for an image of this size at these fixed bits (see above).
+inline double guard_band_factor(int width, int height, int fixed_bits) {
+    const double extent = static_cast<double>(width > height ? width : height) * static_cast<double>(int64_t{1} << fixed_bits);
+    const double limit = 0x1p60 / (extent * extent);  // g (g + 1) / 2 <= limit
+    double g = kGuardBand;
+    while (g > 1.0 && g * (g + 1.0) * 0.5 > limit) g -= 0.25;
+    return g < 1.0 ? 1.0 : g;
+}
 
 // A sample that no triangle covers has this triangle id.
 inline constexpr uint32_t kNoTriangle = 0xFFFFFFFFu;

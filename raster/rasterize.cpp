@@ -93,7 +93,7 @@ void resolve_band(const std::vector<TriangleSetup>& triangles, int row_begin, in
                 }
                 const TriangleSetup& t = triangles[winner];
                 const FixedPosition sample = sample_fixed_position(px, py, s, offsets, fixed_bits);
-                const SampleHit hit = perspective_correct_hit(t, sample.x, sample.y);
+                const SampleHit hit = interpolate_hit(t, sample.x, sample.y);
                 out.triangle[at] = t.triangle_id;
                 out.bary[at] = hit.bary;
                 out.view_depth[at] = hit.view_depth;

@@ -1,6 +1,8 @@
 // The rasterizer pipeline: runs each stage in order on plain structs and records what it did.
 #include "raster/render.h"
 
+#include "raster/tiled_render.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -38,9 +40,9 @@ uint64_t frame_bytes(const RenderSettings& settings) {
 std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry, int threads,
                                             const PipelineStages& stages, RenderStats& stats) {
     // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
-    const ClipVolume volume{scene.camera.near, scene.camera.far};
     const RenderSettings& settings = scene.settings;
-    const SetupParams setup_params{settings.width, settings.height, settings.snap_bits};
+    const ClipVolume volume = clip_volume_for(scene.camera, settings);
+    const SetupParams setup_params = setup_params_for(settings);
     const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
     std::vector<std::vector<TriangleSetup>> chunk_setups(chunks);
     std::vector<size_t> chunk_clipped(chunks, 0);
@@ -97,6 +99,10 @@ RenderResult render(const Scene& scene, const RenderOptions& options, const Pipe
 }
 
 void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result, const PipelineStages& stages) {
+    if (options.path == RasterPath::tiled && stages.rasterize == PipelineStages{}.rasterize) {
+        render_tiled_into(scene, options, result, stages);
+        return;
+    }
     const auto start = Clock::now();
     const RenderSettings& settings = scene.settings;
     result.stats = RenderStats{};

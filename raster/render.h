@@ -14,11 +14,16 @@
 
 namespace raster {
 
+// Which rasterizer runs: the tiled fast path (tiled_render.h) or the reference full-frame band rasterizer
+// (rasterize.h). Both give byte-identical images and visibility buffers (tests/tiled_render_test.cpp).
+enum class RasterPath { tiled, reference };
+
 struct RenderOptions {
     int threads = 0;  // 0 = all cores; the output is the same for any value
     bool alpha = false;
     bool keep_visibility = true;  // the tiled path can skip filling the full-frame visibility buffer
     bool allow_simd = true;       // AVX2 where the CPU has it; false forces the portable code (same bytes)
+    RasterPath path = RasterPath::tiled;  // a replaced rasterize stage (a test's mutant) always runs the reference
 };
 
 // Counts and in-process timings of one frame (loading excluded).
@@ -28,6 +33,7 @@ struct RenderStats {
     size_t rasterized = 0;       // screen triangles after clipping, fan splitting, culling and degeneracy
     size_t samples = 0;          // width * height * samples per pixel
     size_t covered_samples = 0;  // samples with a visible triangle
+    size_t hidden_blocks = 0;    // tiled path: (triangle, 8x8 block) pairs skipped by hierarchical Z
     double ms_vertex = 0, ms_setup = 0, ms_raster = 0, ms_shade = 0, ms_total = 0;
 };
 

@@ -9,6 +9,7 @@
 
 #include "raster/conventions.h"
 #include "raster/mesh.h"
+#include "raster/precision_modes.h"
 
 namespace raster {
 
@@ -73,6 +74,7 @@ struct RenderSettings {
     bool cull_backfaces = false;
     int snap_bits = kDefaultSnapBits;
     glm::vec3 ambient_light{1.0f};  // multiplies every material's ambient term
+    PrecisionModes modes;           // edge arithmetic, interpolation, depth format, clipping, hierarchical Z
 };
 
 struct Scene {

@@ -106,7 +106,8 @@ void read_camera(const YAML::Node& node, const YamlReader& reader, Camera& camer
 
 void read_render(const YAML::Node& node, const YamlReader& reader, RenderSettings& settings) {
     reader.expect_map(node, "render");
-    reader.check_keys(node, {"samples", "pattern", "msaa", "shading", "cull", "snap_bits", "ambient"});
+    reader.check_keys(node, {"samples", "pattern", "msaa", "shading", "cull", "snap_bits", "ambient", "edges",
+                             "interpolation", "depth", "clipping", "hierarchical_z"});
     if (YAML::Node v = reader.optional(node, "samples"); v.IsDefined())
         settings.samples = reader.integer(v, "samples", 1, 256);
     if (YAML::Node v = reader.optional(node, "pattern"); v.IsDefined()) {
@@ -127,6 +128,25 @@ void read_render(const YAML::Node& node, const YamlReader& reader, RenderSetting
         settings.snap_bits = reader.integer(v, "snap_bits", kMinSnapBits, kMaxSnapBits);
     if (YAML::Node v = reader.optional(node, "ambient"); v.IsDefined())
         settings.ambient_light = read_color(v, reader, "render ambient");
+    PrecisionModes& modes = settings.modes;
+    if (YAML::Node v = reader.optional(node, "edges"); v.IsDefined()) {
+        if (!parse_edge_arithmetic(reader.string(v, "edges"), modes.edges))
+            reader.fail(v, "edges must be one of " + edge_arithmetic_names());
+    }
+    if (YAML::Node v = reader.optional(node, "interpolation"); v.IsDefined()) {
+        if (!parse_interpolation(reader.string(v, "interpolation"), modes.interpolation))
+            reader.fail(v, "interpolation must be one of " + interpolation_names());
+    }
+    if (YAML::Node v = reader.optional(node, "depth"); v.IsDefined()) {
+        if (!parse_depth_format(reader.string(v, "depth"), modes.depth))
+            reader.fail(v, "depth must be one of " + depth_format_names());
+    }
+    if (YAML::Node v = reader.optional(node, "clipping"); v.IsDefined()) {
+        if (!parse_clipping(reader.string(v, "clipping"), modes.clipping))
+            reader.fail(v, "clipping must be one of " + clipping_names());
+    }
+    if (YAML::Node v = reader.optional(node, "hierarchical_z"); v.IsDefined())
+        modes.hierarchical_z = reader.boolean(v, "hierarchical_z");
 }
 
 // The image size, sample count and frame memory together, once both sections are read, at the value to change.

@@ -8,6 +8,8 @@
 #include <glm/vec4.hpp>
 
 #include "raster/clip.h"
+#include "raster/precision_modes.h"
+#include "raster/scene.h"
 
 namespace raster {
 
@@ -16,6 +18,10 @@ struct SetupParams {
     int width = 0;
     int height = 0;
     int snap_bits = 8;
+    double side = 1.0;  // the clip volume's side factor: vertices are kept within it (guard band), see conventions.h
+    EdgeArithmetic edges = EdgeArithmetic::fixed;
+    Interpolation interpolation = Interpolation::perspective;
+    DepthFormat depth = DepthFormat::reversed_z;
 };
 
 // One screen-space triangle, ready to rasterize. Coordinates are on the grid of 1/2^fixed_bits pixel.
@@ -29,10 +35,25 @@ struct TriangleSetup {
     int64_t bias[3] = {};
     int64_t area2 = 0;           // twice the snapped area, > 0
     int min_x = 0, min_y = 0, max_x = -1, max_y = -1;  // pixel bounding box, inclusive, inside the viewport
-    float depth[3] = {};         // reversed-Z depth z/w at each vertex
+    double depth[3] = {};        // the depth test's key at each vertex, larger is nearer (depth_key)
     float inv_w[3] = {};         // 1 / view depth at each vertex
     glm::vec3 bary[3];           // each vertex's barycentric coordinates in the original triangle
+    bool affine = false;         // Interpolation::affine: barycentrics linear in screen space
+    bool depth_fixed24 = false;  // DepthFormat::fixed24: the interpolated key is rounded to an integer
 };
+
+// The depth test's key for reversed-Z depth d = z/w (near 1, far 0), in `format`; larger is always nearer, so
+// every path keeps one comparison:
+//   reversed_z  d rounded to float;
+//   float_z     -(1 - d) rounded to float (OpenGL-style z in [0, 1], negated);
+//   fixed24     -(1 - d) (2^24 - 1), not rounded: the interpolated value is rounded to an integer per sample.
+inline constexpr double kFixed24Levels = 16777215.0;
+double depth_key(double reversed_z, DepthFormat format);
+
+// Setup's parameters for a scene's settings (image, snap bits, modes, the guard band factor when it clips so).
+SetupParams setup_params_for(const RenderSettings& settings);
+// The clip volume for a camera and settings (near, far, and the side factor of the clipping mode).
+ClipVolume clip_volume_for(const Camera& camera, const RenderSettings& settings);
 
 // Projects, snaps and triangulates a clipped polygon (as a fan from its first vertex), appending one setup per
 // non-degenerate triangle to `out` (back-face culling is faces_front's, before clipping). Returns the number appended.

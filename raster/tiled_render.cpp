@@ -2,6 +2,9 @@
 #include "raster/tiled_render.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
 #include <atomic>
 #include <chrono>
 
@@ -67,10 +70,23 @@ Bins bin_setups(const std::vector<TriangleSetup>& setups, int width, int height,
     return bins;
 }
 
+// Hierarchical Z: for each 8x8 block of the tile, the smallest depth key stored in it (-inf while
+// any sample may be empty). A triangle whose key cannot exceed that bound anywhere in the block loses every depth
+// test there (ties keep the earlier triangle), so the block is skipped: the output never changes, only the work.
+constexpr int kBlocksPerTileSide = kTileSize / kBlockSize;
+constexpr double kNoBound = -std::numeric_limits<double>::infinity();
+
+// How far a sample's key can sit above the plane's double value at the block's corners: the plane's evaluation in
+// double and the key's rounding to float (2^-24 relative) stay well inside a relative 2^-22; fixed24 rounds to the
+// nearest level, up to half a level more.
+inline double key_rounding_margin(double key, bool fixed24) { return std::fabs(key) * 0x1p-22 + (fixed24 ? 0.5 : 0.0) + 1e-300; }
+
 // One worker's tile planes: depth and winning setup per sample, and the per-triangle sample constants.
 struct TileScratch {
     std::vector<float> depth;
     std::vector<uint32_t> winner;
+    std::array<double, kBlocksPerTileSide * kBlocksPerTileSide> block_far;  // hierarchical Z bounds
+    size_t hidden_blocks = 0;                                               // blocks it skipped, this tile
     // For the samples of one block row, j = pixel * samples + sample: each edge's offset from the edge value at
     // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the coverage flags.
     std::vector<int64_t> row_offset[3];
@@ -85,7 +101,21 @@ struct TileJob {
     const SampleBounds& bounds;
     int fixed_bits;
     int width, height, samples;
+    bool hierarchical_z;
 };
+
+// The largest value of a triangle's depth plane over the sample positions of a pixel rectangle: the plane is
+// affine, so it is at one of the rectangle's corners (extrapolated beyond the triangle, which only raises it).
+inline double max_key_over(const TriangleSetup& t, const DepthPlane& depth, int x0, int x1, int y0, int y1, int F,
+                           const SampleBounds& bounds) {
+    const int64_t xs[2] = {(int64_t{x0} << F) + bounds.min_x, (int64_t{x1} << F) + bounds.max_x};
+    const int64_t ys[2] = {(int64_t{y0} << F) + bounds.min_y, (int64_t{y1} << F) + bounds.max_y};
+    double largest = -std::numeric_limits<double>::infinity();
+    for (int64_t X : xs)
+        for (int64_t Y : ys)
+            largest = std::max(largest, depth.value(t.a[1] * X + t.b[1] * Y + t.c[1], t.a[2] * X + t.b[2] * Y + t.c[2]));
+    return largest;
+}
 
 // Coverage flags of the n samples of a block row. A plain loop over arrays, so that the AVX2 build of the caller
 // vectorizes it (four 64-bit lanes per instruction); integer arithmetic, so every build gives the same flags.
@@ -93,6 +123,27 @@ inline void row_coverage(const int64_t (&base)[3], const int64_t* offset0, const
                          const int64_t* offset2, size_t n, uint8_t* covered) {
     for (size_t j = 0; j < n; ++j)
         covered[j] = ((base[0] + offset0[j]) | (base[1] + offset1[j]) | (base[2] + offset2[j])) >= 0;
+}
+
+// The smallest stored key of the block at (block_x0, block_y0) (its part inside the image), -inf while any of its
+// samples is empty: a triangle whose key nowhere exceeds it loses every depth test in the block.
+inline double block_min_key(const TileJob& job, const TileScratch& scratch, int block_x0, int block_y0, int tile_x,
+                            int tile_y) {
+    const int S = job.samples;
+    const size_t n = static_cast<size_t>(std::min(block_x0 + kBlockSize, job.width) - block_x0) * S;
+    float smallest = std::numeric_limits<float>::infinity();
+    bool empty = false;
+    for (int py = block_y0; py < std::min(block_y0 + kBlockSize, job.height); ++py) {
+        const size_t row_start = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(block_x0 - tile_x)) * S;
+        const float* depth = scratch.depth.data() + row_start;
+        const uint32_t* winner = scratch.winner.data() + row_start;
+        for (size_t j = 0; j < n; ++j) {
+            empty |= winner[j] == kNoTriangle;
+            smallest = std::min(smallest, depth[j]);
+        }
+    }
+    if (empty) return kNoBound;
+    return static_cast<double>(smallest);
 }
 
 // Rasterizes one setup into the tile: its bounding box clipped to the tile, in 8x8-pixel blocks that are
@@ -123,6 +174,18 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
                 accept = accept && range.min >= 0;
             }
             if (reject) continue;
+            double* block_far = nullptr;
+            const int block_x0 = bx / kBlockSize * kBlockSize, block_y0 = by / kBlockSize * kBlockSize;
+            if (job.hierarchical_z) {
+                block_far = &scratch.block_far[static_cast<size_t>((block_y0 - tile_y) / kBlockSize) * kBlocksPerTileSide +
+                                               static_cast<size_t>((block_x0 - tile_x) / kBlockSize)];
+                const double nearest = max_key_over(t, depth, bx, block_x1, by, block_y1, F, job.bounds);
+                if (nearest + key_rounding_margin(nearest, depth.fixed24) <= *block_far) {  // all hidden
+                    ++scratch.hidden_blocks;
+                    continue;
+                }
+            }
+            bool wrote = false;
             const size_t n = static_cast<size_t>(block_x1 - bx + 1) * S;
             if (accept) std::fill(covered, covered + n, uint8_t{1});
             for (int py = by; py <= block_y1; ++py) {
@@ -141,9 +204,11 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
                     if (scratch.winner[at] == kNoTriangle || d > scratch.depth[at]) {
                         scratch.depth[at] = d;
                         scratch.winner[at] = index;
+                        wrote = true;
                     }
                 }
             }
+            if (block_far && wrote) *block_far = block_min_key(job, scratch, block_x0, block_y0, tile_x, tile_y);
         }
     }
 }
@@ -176,7 +241,7 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                 }
                 if (uniform && (msaa || S == 1)) {
                     const TriangleSetup& t = job.setups[winner];
-                    const SampleHit hit = perspective_correct_hit(t, (int64_t{px} << F) + job.offsets.x[0],
+                    const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[0],
                                                                   (int64_t{py} << F) + job.offsets.y[0]);
                     resolver.one_triangle(t.triangle_id, hit.bary, image.at(px, py));
                     covered += static_cast<size_t>(S);
@@ -206,7 +271,7 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                     for (int earlier = 0; earlier < s && needed; ++earlier)
                         needed = scratch.pixel_triangle[earlier] != t.triangle_id;
                 if (!needed) continue;
-                const SampleHit hit = perspective_correct_hit(t, (int64_t{px} << F) + job.offsets.x[s],
+                const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[s],
                                                               (int64_t{py} << F) + job.offsets.y[s]);
                 scratch.pixel_bary[s] = hit.bary;
                 if (visibility) {
@@ -261,8 +326,9 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
     } else {
         result.visibility = VisibilityBuffer{};
     }
-    const TileJob job{setups, offsets, bounds, fixed_bits, settings.width, settings.height, samples};
-    std::atomic<size_t> covered{0};
+    const TileJob job{setups, offsets, bounds, fixed_bits, settings.width, settings.height, samples,
+                      settings.modes.hierarchical_z};
+    std::atomic<size_t> covered{0}, hidden{0};
     const bool use_avx2 = options.allow_simd && __builtin_cpu_supports("avx2");
     parallel_for(bins.setups.size(), options.threads, [&](size_t tile) {
         thread_local TileScratch scratch;
@@ -276,6 +342,8 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
         scratch.pixel_bary.resize(static_cast<size_t>(samples));
         const int tile_x = static_cast<int>(tile % bins.tiles_x) * kTileSize;
         const int tile_y = static_cast<int>(tile / bins.tiles_x) * kTileSize;
+        scratch.block_far.fill(kNoBound);
+        scratch.hidden_blocks = 0;
         if (bins.setups[tile].empty() && !visibility) {  // nothing drawn here: background only
             const int x1 = std::min(settings.width, tile_x + kTileSize), y1 = std::min(settings.height, tile_y + kTileSize);
             for (int py = tile_y; py < y1; ++py)
@@ -287,10 +355,12 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
             else rasterize_in_tile_portable(job, index, tile_x, tile_y, scratch);
         }
         covered += resolve_tile(job, tile_x, tile_y, resolver, settings.msaa, scratch, image, visibility);
+        hidden += scratch.hidden_blocks;
         if (!bins.setups[tile].empty()) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
     });
     stats.samples = static_cast<size_t>(settings.width) * settings.height * samples;
     stats.covered_samples = covered;
+    stats.hidden_blocks = hidden;
     stats.ms_raster = milliseconds_since(stage_start);  // rasterization and shading are interleaved per tile
     stats.ms_total = milliseconds_since(start);
 }

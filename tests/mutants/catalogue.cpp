@@ -112,19 +112,13 @@ int setup_with_cracks(const ClippedPolygon& polygon, uint32_t id, const SetupPar
 }
 
 // "float edge functions": the edge equations are set up in float (24-bit mantissa), so c = dy * x - dx * y is
-// rounded; two triangles sharing an edge round it differently and the edge cracks or doubles.
+// rounded; two triangles sharing an edge round it differently and the edge cracks or doubles. That is the
+// EdgeArithmetic::float32 mode, forced on whatever the scene asks for.
 int setup_with_float_edges(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
                            std::vector<TriangleSetup>& out) {
-    return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
-        for (int i = 0; i < 3; ++i) {
-            const int s = (i + 1) % 3, e = (i + 2) % 3;
-            const float dx = static_cast<float>(t.x[e] - t.x[s]), dy = static_cast<float>(t.y[e] - t.y[s]);
-            const float c = dy * static_cast<float>(t.x[s]) - dx * static_cast<float>(t.y[s]);
-            t.a[i] = std::llround(static_cast<double>(-dy));
-            t.b[i] = std::llround(static_cast<double>(dx));
-            t.c[i] = std::llround(static_cast<double>(c));
-        }
-    });
+    SetupParams float_edges = params;
+    float_edges.edges = EdgeArithmetic::float32;
+    return setup_polygon(polygon, id, float_edges, out);
 }
 
 // "fill rule inverted (bottom-right)": samples on an edge belong to the triangle when the edge is a bottom or right
@@ -171,8 +165,7 @@ bool faces_front_inverted(const glm::vec4& a, const glm::vec4& b, const glm::vec
 // weighted as if w were 1), so textures and colours swim and view depth is wrong.
 void rasterize_affine(const std::vector<TriangleSetup>& triangles, const RasterParams& params, VisibilityBuffer& out) {
     std::vector<TriangleSetup> affine = triangles;
-    for (TriangleSetup& t : affine)
-        for (float& inv_w : t.inv_w) inv_w = 1.0f;
+    for (TriangleSetup& t : affine) t.affine = true;  // the Interpolation::affine mode, forced
     rasterize(affine, params, out);
 }
 
@@ -264,7 +257,7 @@ void rasterize_without_depth_test(const std::vector<TriangleSetup>& triangles, c
                                   VisibilityBuffer& out) {
     std::vector<TriangleSetup> flat = triangles;
     for (TriangleSetup& t : flat)
-        for (float& d : t.depth) d = 0.5f;
+        for (double& d : t.depth) d = 0.5;
     rasterize(flat, params, out);
 }
 
