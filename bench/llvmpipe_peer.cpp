@@ -132,6 +132,14 @@ struct LlvmpipePeer::Impl {
     std::vector<MeshDraw> draws;
     GLint loc_base = -1, loc_ambient = -1, loc_diffuse = -1, loc_specular = -1, loc_exponent = -1;
 
+    // Several peers (one per scene) may live in one process: each GL call sequence starts by making this
+    // peer's context current, which is free when it already is.
+    void make_current() {
+        if (OSMesaGetCurrentContext() != context &&
+            !OSMesaMakeCurrent(context, buffer.data(), GL_UNSIGNED_BYTE, width, height))
+            throw std::runtime_error("llvmpipe peer: OSMesaMakeCurrent failed");
+    }
+
     void release_fbo() {
         if (fbo) glDeleteFramebuffers(1, &fbo);
         if (color_rb) glDeleteRenderbuffers(1, &color_rb);
@@ -274,17 +282,19 @@ LlvmpipePeer::LlvmpipePeer(const raster::Scene& scene, int threads) : impl_(std:
 
 LlvmpipePeer::~LlvmpipePeer() {
     Impl& p = *impl_;
-    if (p.context) {
+    if (!p.context) return;
+    if (OSMesaMakeCurrent(p.context, p.buffer.data(), GL_UNSIGNED_BYTE, p.width, p.height)) {
         p.release_fbo();
         if (p.program) glDeleteProgram(p.program);
         if (p.vbo) glDeleteBuffers(1, &p.vbo);
         if (p.ibo) glDeleteBuffers(1, &p.ibo);
-        OSMesaDestroyContext(p.context);
     }
+    OSMesaDestroyContext(p.context);
 }
 
 void LlvmpipePeer::set_samples(int samples) {
     Impl& p = *impl_;
+    p.make_current();
     if (samples == p.samples) return;
     p.release_fbo();
     p.samples = 1;
@@ -322,6 +332,7 @@ int LlvmpipePeer::samples() const { return impl_->samples; }
 
 void LlvmpipePeer::draw_frame() {
     Impl& p = *impl_;
+    p.make_current();
     glBindFramebuffer(GL_FRAMEBUFFER, p.fbo);  // 0 (OSMesa's buffer) at 1 sample
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     for (const Impl::MeshDraw& draw : p.draws) {
@@ -353,6 +364,7 @@ std::vector<uint8_t> LlvmpipePeer::image_top_down() const {
 size_t LlvmpipePeer::triangles() const { return impl_->triangles; }
 
 std::string LlvmpipePeer::renderer() const {
+    impl_->make_current();
     const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     return std::string(renderer ? renderer : "?") + ", " + (version ? version : "?");

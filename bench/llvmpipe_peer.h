@@ -17,6 +17,7 @@ public:
     // an OSMesa compatibility context with a 24-bit depth buffer, compiles the shading program and uploads the
     // scene's vertex-stage world positions, normals and indices once. Only what the bench scenes use is supported:
     // blinn-phong shading and material colours (no vertex or face colours). Throws std::runtime_error.
+    // Several peers may coexist: each makes its own context current before drawing.
     LlvmpipePeer(const raster::Scene& scene, int threads);
     ~LlvmpipePeer();
     LlvmpipePeer(const LlvmpipePeer&) = delete;
