@@ -24,6 +24,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         add_render_command(app),
         add_compare_command(app),
         add_report_command(app),
+        add_tradeoff_command(app),
         add_balboa_command(app),
     };
 

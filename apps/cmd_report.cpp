@@ -1,6 +1,4 @@
 // `raster report`: compares many scenes with the oracle and writes index.html, summary.json and the images.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -8,7 +6,10 @@
 #include <optional>
 #include <set>
 
+#include <nlohmann/json.hpp>
+
 #include "apps/command.h"
+#include "apps/progress_bar.h"
 #include "oracle/comparison.h"
 #include "oracle/diff_map.h"
 #include "oracle/embree_device.h"
@@ -31,6 +32,7 @@ struct ReportFlags {
     std::optional<int> samples;
     bool fast_oracle = false;
     int threads = 0;
+    std::string tradeoff_dir;
 };
 
 void register_report_flags(CLI::App& app, ReportFlags& flags) {
@@ -46,6 +48,9 @@ void register_report_flags(CLI::App& app, ReportFlags& flags) {
     report->add_flag("--fast-oracle", flags.fast_oracle, "Embree without RTC_SCENE_FLAG_ROBUST (faster, less careful)");
     report->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (results are the same for any count)")
         ->check(CLI::Range(0, 256));
+    report->add_option("--tradeoff", flags.tradeoff_dir,
+                       "Link the results of `raster tradeoff -o DIR` (copied into OUTPUT/tradeoff/); without it, "
+                       "OUTPUT/tradeoff/tradeoff.json is linked when it exists");
 }
 
 bool is_scene_file(const fs::path& path) {
@@ -75,30 +80,57 @@ std::vector<fs::path> scene_files(const std::vector<std::string>& inputs) {
     return files;
 }
 
-// A one-line progress bar, redrawn in place; only used when stderr is a terminal.
-class ProgressBar {
-public:
-    ProgressBar(std::ostream& err, size_t total) : err_(err), total_(total), enabled_(::isatty(STDERR_FILENO) == 1) {}
-    void show(size_t done, const std::string& label) {
-        if (!enabled_) return;
-        constexpr int kWidth = 30;
-        const int filled = total_ ? static_cast<int>(kWidth * done / total_) : kWidth;
-        err_ << "\r[" << std::string(filled, '#') << std::string(kWidth - filled, '-') << "] " << done << "/" << total_
-             << " " << label << "\x1b[K" << std::flush;
-    }
-    void finish() {
-        if (enabled_) err_ << "\r\x1b[K" << std::flush;
-    }
+// The files of a `raster tradeoff` run that the report links.
+constexpr const char* kTradeoffFiles[] = {"tradeoff.json", "tradeoff.csv", "pareto.svg"};
+constexpr uint64_t kMaxTradeoffFileBytes = uint64_t{256} << 20;
 
-private:
-    std::ostream& err_;
-    size_t total_;
-    bool enabled_;
-};
+// Reads DIR/tradeoff.json: an object with a "scenes" array. Throws InputError naming the file otherwise.
+nlohmann::json read_tradeoff_results(const fs::path& dir) {
+    const fs::path file = dir / "tradeoff.json";
+    const std::string text = read_file_bytes(file, kMaxTradeoffFileBytes);
+    nlohmann::json results = nlohmann::json::parse(text, nullptr, false);
+    if (results.is_discarded() || !results.is_object() || !results.contains("scenes") || !results["scenes"].is_array())
+        throw InputError(file.string(), 0, 0,
+                         "not the tradeoff.json of `raster tradeoff` (an object with a scenes array)");
+    return results;
+}
+
+// The trade-off results to link, from --tradeoff DIR (every file must be there) or, without it, from
+// OUTPUT/tradeoff/ when that holds a tradeoff.json. Throws InputError for an explicit DIR that is unusable.
+std::optional<nlohmann::json> find_tradeoff_results(const ReportFlags& flags, std::ostream& err) {
+    if (!flags.tradeoff_dir.empty()) {
+        for (const char* name : kTradeoffFiles)
+            if (!fs::is_regular_file(fs::path(flags.tradeoff_dir) / name))
+                throw InputError((fs::path(flags.tradeoff_dir) / name).string(), 0, 0,
+                                 "no such file (run `raster tradeoff SCENE... -o " + flags.tradeoff_dir + "` first)");
+        return read_tradeoff_results(flags.tradeoff_dir);
+    }
+    const fs::path in_place = fs::path(flags.output_dir) / "tradeoff";
+    if (!fs::is_regular_file(in_place / "tradeoff.json")) return std::nullopt;
+    try {
+        return read_tradeoff_results(in_place);
+    } catch (const InputError& error) {
+        err << "raster report: warning: not linking the trade-off results: " << error.what() << "\n";
+        return std::nullopt;
+    }
+}
+
+// Copies the trade-off files into OUTPUT/tradeoff/ (each written whole), unless they are already there.
+void copy_tradeoff_files(const fs::path& from, const fs::path& report_dir) {
+    const fs::path to = report_dir / "tradeoff";
+    std::error_code error;
+    if (fs::equivalent(from, to, error)) return;
+    fs::create_directories(to, error);
+    if (error) throw std::runtime_error("cannot create " + to.string() + ": " + error.message());
+    for (const char* name : kTradeoffFiles)
+        write_file_atomically(to / name, read_file_bytes(from / name, kMaxTradeoffFileBytes));
+}
 
 int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     std::vector<Scene> scenes;
+    std::optional<nlohmann::json> tradeoff;
     try {
+        tradeoff = find_tradeoff_results(flags, err);
         const std::vector<fs::path> files =
             scene_files(flags.inputs.empty() ? std::vector<std::string>{kDefaultSceneDir} : flags.inputs);
         for (const fs::path& file : files) {
@@ -153,8 +185,15 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
         }
         progress.show(scenes.size(), "done");
         progress.finish();
-        write_file_atomically(dir / "summary.json", oracle::report_summary(rows).dump(2) + "\n");
-        write_file_atomically(dir / "index.html", oracle::report_html(rows));
+        std::optional<oracle::TradeoffLink> link;
+        nlohmann::json summary = oracle::report_summary(rows);
+        if (tradeoff) {
+            if (!flags.tradeoff_dir.empty()) copy_tradeoff_files(flags.tradeoff_dir, dir);
+            link = oracle::TradeoffLink{"tradeoff", std::move(*tradeoff)};
+            summary["tradeoff"] = "tradeoff/tradeoff.json";
+        }
+        write_file_atomically(dir / "summary.json", summary.dump(2) + "\n");
+        write_file_atomically(dir / "index.html", oracle::report_html(rows, link));
     } catch (const std::exception& error) {
         progress.finish();
         err << "raster report: error: " << error.what() << "\n";

@@ -22,6 +22,7 @@ struct Command {
 Command add_render_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
+Command add_tradeoff_command(CLI::App& app);
 Command add_balboa_command(CLI::App& app);
 
 }  // namespace raster::cli

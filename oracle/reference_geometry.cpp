@@ -156,9 +156,11 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene&
                 edge_kinds_.push_back(v.outgoing);
             }
             // The bounds come from the clipped vertices; a triangle with nothing inside the view volume still gets
-            // them from its original vertices in front of the eye, for samples where a float clip kept a sliver.
+            // them from its original vertices that float error may put in front of the near plane, for samples
+            // where a float clip kept a sliver. A vertex within its w error of the eye has no bounded screen
+            // position at all (screen_error is infinite), and then neither has anything about the triangle.
             for (const ClipVertex& v : clipped.empty() ? original : clipped) {
-                if (clipped.empty() && !(v.clip.w > 0.0)) continue;
+                if (clipped.empty() && !(v.clip.w + v.error.w >= near_)) continue;
                 const glm::dvec2 error = screen_error(v.clip, v.error, width_, height_);
                 out.radius = std::max(out.radius, snap + std::max(error.x, error.y));
                 out.depth_error = std::max(out.depth_error, v.error.w);

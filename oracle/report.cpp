@@ -39,6 +39,11 @@ table.report img { width: 240px; height: auto; image-rendering: pixelated; backg
 table.counts td { padding: 0 0.6em 0 0; font-size: 0.9em; }
 tr.genuine > th { color: #c00; }
 .legend span { padding: 0 0.4em; }
+img.pareto { max-width: 100%; height: auto; border: 1px solid #ccc; background: #fff; }
+table.tradeoff { border-collapse: collapse; margin-bottom: 1em; }
+table.tradeoff th, table.tradeoff td { padding: 0.15em 0.6em; text-align: right; border-bottom: 1px solid #e4e4e4; }
+table.tradeoff th:first-child, table.tradeoff td:first-child { text-align: left; }
+table.tradeoff tr.on-front td { color: #a01010; font-weight: bold; }
 )";
 
 constexpr const char* kScript = R"(
@@ -60,6 +65,69 @@ std::string image_cell(const std::string& file, const std::string& alt) {
            escape_html(alt) + "\"></a></td>";
 }
 
+// object[key], or null when it is missing (a hand-edited or older tradeoff.json must not crash the page).
+nlohmann::json field(const nlohmann::json& object, const char* key) {
+    return object.is_object() && object.contains(key) ? object[key] : nlohmann::json();
+}
+
+// A number of a tradeoff.json, with `digits` decimals; "-" when missing or null.
+std::string fixed(const nlohmann::json& value, int digits) {
+    if (!value.is_number()) return "-";
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*f", digits, value.get<double>());
+    return text;
+}
+
+// object[key] as text, or "" when it is missing or not a string.
+std::string text(const nlohmann::json& object, const char* key) {
+    const nlohmann::json value = field(object, key);
+    return value.is_string() ? value.get<std::string>() : "";
+}
+
+// The elements of object[key] that are objects (none when it is missing or not an array).
+std::vector<nlohmann::json> objects(const nlohmann::json& object, const char* key) {
+    std::vector<nlohmann::json> out;
+    const nlohmann::json list = field(object, key);
+    if (list.is_array())
+        for (const nlohmann::json& item : list)
+            if (item.is_object()) out.push_back(item);
+    return out;
+}
+
+// The "Speed against accuracy" section: the plot, a table per scene and the links. Reads tradeoff.json's fields
+// defensively: a missing or mistyped field shows as "-" or blank, never as an exception.
+std::string tradeoff_section(const TradeoffLink& link) {
+    const std::string dir = link.dir.empty() ? "" : link.dir + "/";
+    const nlohmann::json& results = link.results;
+    std::string html = "<h2 id=\"tradeoff\">Speed against accuracy</h2>\n";
+    html += "<p>Each mode's median frame time (of " + fixed(field(results, "runs"), 0) +
+            " runs) against its colour RMSE (0-255) to the oracle's image at " +
+            fixed(field(field(results, "reference"), "samples_per_pixel"), 0) +
+            " samples per pixel; genuine and ambiguous samples as above; coverage error = the sum over triangles of "
+            "|sampled area - exact area| / the total exact area. In red: the Pareto front. <a href=\"" +
+            escape_html(dir + "tradeoff.csv") + "\">CSV</a>, <a href=\"" + escape_html(dir + "tradeoff.json") +
+            "\">JSON</a>.</p>\n";
+    html += "<p><a href=\"" + escape_html(dir + "pareto.svg") + "\"><img class=\"pareto\" src=\"" +
+            escape_html(dir + "pareto.svg") + "\" alt=\"time against colour RMSE per mode, Pareto front\"></a></p>\n";
+    for (const nlohmann::json& scene : objects(results, "scenes")) {
+        const std::string name = text(scene, "name");
+        html += "<h3>" + escape_html(name) + "</h3>\n<table class=\"tradeoff\" data-scene=\"" + escape_html(name) +
+                "\">\n<thead><tr><th>mode</th><th>median ms</th><th>genuine</th><th>ambiguous</th><th>colour RMSE</th>"
+                "<th>coverage error</th><th>front</th></tr></thead>\n<tbody>\n";
+        for (const nlohmann::json& mode : objects(scene, "modes")) {
+            const bool on_front = field(mode, "on_front") == true;
+            html += std::string("<tr") + (on_front ? " class=\"on-front\"" : "") + "><td title=\"" +
+                    escape_html(text(mode, "description")) + "\">" + escape_html(text(mode, "mode")) + "</td><td>" +
+                    fixed(field(mode, "median_ms"), 2) + "</td><td>" + fixed(field(mode, "genuine"), 0) + "</td><td>" +
+                    fixed(field(mode, "ambiguous"), 0) + "</td><td>" + fixed(field(mode, "color_rmse"), 3) +
+                    "</td><td>" + fixed(field(mode, "coverage_error"), 5) + "</td><td>" + (on_front ? "&#10003;" : "") +
+                    "</td></tr>\n";
+        }
+        html += "</tbody>\n</table>\n";
+    }
+    return html;
+}
+
 }  // namespace
 
 std::string unique_file_stem(const std::string& name, std::set<std::string>& taken) {
@@ -76,7 +144,7 @@ std::string unique_file_stem(const std::string& name, std::set<std::string>& tak
     return stem;
 }
 
-std::string report_html(const std::vector<ReportRow>& rows) {
+std::string report_html(const std::vector<ReportRow>& rows, const std::optional<TradeoffLink>& tradeoff) {
     size_t with_genuine = 0;
     for (const ReportRow& row : rows) with_genuine += row.comparison.value("genuine_total", 0) > 0;
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -113,7 +181,9 @@ std::string report_html(const std::vector<ReportRow>& rows) {
                 number(c["oracle_ms"]) + " ms (" + escape_html(c.value("oracle_mode", "")) + ")</td></tr>";
         html += "</table></td></tr>\n";
     }
-    html += "</tbody>\n</table>\n<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
+    html += "</tbody>\n</table>\n";
+    if (tradeoff) html += tradeoff_section(*tradeoff);
+    html += "<script>" + std::string(kScript) + "</script>\n</body>\n</html>\n";
     return html;
 }
 

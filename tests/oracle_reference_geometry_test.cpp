@@ -91,6 +91,22 @@ TEST(ReferenceGeometry, aTriangleBehindTheEyeIsEmpty) {
     EXPECT_TRUE(std::isinf(reference.boundary_distance(0, {25, 25})));
 }
 
+TEST(ReferenceGeometry, aTriangleWithAVertexAtTheEyeHasNoBoundedRadius) {
+    // One vertex exactly at the eye, the others behind it: exactly, nothing is in front of the near plane; but float
+    // error (the eye is off the origin, so the view transform rounds) can move that vertex just in front of it,
+    // where it projects anywhere. The differential fuzzer found Embree doing so.
+    Camera camera = camera_at_origin(45, 1e-6f);
+    camera.eye = {2, 3, 4};
+    camera.target = {2, 3, -1};
+    const Scene at_eye = scene_with_triangles({{{{2, 3, 4}, {3, 2, 9}, {1, 2, 9}}}}, camera, 32, 32);
+    const ReferenceGeometry reference = reference_for(at_eye);
+    EXPECT_EQ(reference.polygon(0).count, 0u);
+    EXPECT_TRUE(std::isinf(reference.polygon(0).radius));
+    // Moved clearly behind the eye (beyond its float error), the vertex bounds nothing.
+    const Scene behind = scene_with_triangles({{{{2, 3, 5}, {3, 2, 9}, {1, 2, 9}}}}, camera, 32, 32);
+    EXPECT_FALSE(std::isinf(reference_for(behind).polygon(0).radius));
+}
+
 TEST(ReferenceGeometry, squareRangesHoldTheValuesInsideTheSquare) {
     const Scene scene = scene_with_triangles({{{{-1, -1, -2}, {1, -1, -3}, {0, 1, -6}}}}, camera_at_origin(), 100, 100);
     const ReferenceGeometry reference = reference_for(scene);
