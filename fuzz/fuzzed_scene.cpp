@@ -109,6 +109,15 @@ Scene fuzzed_scene(FuzzedDataProvider& input, const FuzzedSceneLimits& limits) {
         scene.lights.push_back(light);
     }
     scene.meshes.push_back(fuzzed_triangles(input, limits));
+    if (limits.precision_modes) {
+        // The first entry of each table is the default, what an exhausted input picks.
+        PrecisionModes& modes = scene.settings.modes;
+        modes.edges = input.PickValueInArray({EdgeArithmetic::fixed, EdgeArithmetic::float32});
+        modes.interpolation = input.PickValueInArray({Interpolation::perspective, Interpolation::affine});
+        modes.depth = input.PickValueInArray({DepthFormat::reversed_z, DepthFormat::float_z, DepthFormat::fixed24});
+        modes.clipping = input.PickValueInArray({Clipping::full, Clipping::guard_band});
+        modes.hierarchical_z = !input.ConsumeBool();
+    }
     return scene;
 }
 
@@ -121,9 +130,12 @@ std::string describe_scene(const Scene& scene) {
         return std::string(buffer);
     };
     const RenderSettings& s = scene.settings;
-    std::snprintf(line, sizeof line, "  image %dx%d, %d samples (%s), %s, msaa %d, cull %d, snap bits %d\n", s.width,
-                  s.height, s.samples, to_string(s.pattern), to_string(s.shading), int{s.msaa}, int{s.cull_backfaces},
-                  s.snap_bits);
+    std::snprintf(line, sizeof line,
+                  "  image %dx%d, %d samples (%s), %s, msaa %d, cull %d, snap bits %d, edges %s, %s, depth %s, "
+                  "clipping %s, hierarchical z %d\n",
+                  s.width, s.height, s.samples, to_string(s.pattern), to_string(s.shading), int{s.msaa},
+                  int{s.cull_backfaces}, s.snap_bits, to_string(s.modes.edges), to_string(s.modes.interpolation),
+                  to_string(s.modes.depth), to_string(s.modes.clipping), int{s.modes.hierarchical_z});
     text += line;
     const Camera& c = scene.camera;
     text += "  camera eye " + vec(c.eye) + " target " + vec(c.target) + " up " + vec(c.up);

@@ -19,6 +19,9 @@ struct FuzzedSceneLimits {
     // Positions (vertices, eye, target, up, lights) also from raw float bits and the table of extremes. The lens
     // (field of view, near, far) always draws from them.
     bool extreme_coordinates = true;
+    // Precision modes (edges, interpolation, depth format, clipping, hierarchical Z), drawn last so that an input
+    // that runs out first keeps the defaults (and inputs saved before modes existed still replay unchanged).
+    bool precision_modes = true;
 };
 
 // A float: a third from ordinary values in [low, high], the rest (with extreme_floats) from raw bits or from the

@@ -27,7 +27,7 @@ inline int64_t snap(double screen, double snap_scale, int shift, int64_t low, in
     const double scaled = std::floor(screen * snap_scale + 0.5);
     if (!(scaled > static_cast<double>(low >> shift))) return low;  // NaN included
     if (!(scaled < static_cast<double>(high >> shift))) return high;
-    return std::clamp(static_cast<int64_t>(scaled) << shift, low, high);
+    return std::clamp(static_cast<int64_t>(scaled) * (int64_t{1} << shift), low, high);  // may be < 0: no shift
 }
 
 // The classic float rasterizer's edge setup: the edge equation from float vertex coordinates, each product and
