@@ -22,6 +22,8 @@
 #include "raster/render.h"
 #include "raster/scene.h"
 #include "raster/scene_loader.h"
+#include "raster/vertex_stage.h"
+#include "oracle/oracle.h"
 
 #ifdef RASTER_HAVE_OSMESA
 #include "llvmpipe_peer.h"
@@ -125,6 +127,24 @@ void bm_raster(benchmark::State& state, const BenchScene* s, RasterCase c) {
     state.counters["ms_setup"] = stats.ms_setup;
     state.counters["ms_raster"] = stats.ms_raster;
     state.counters["ms_shade"] = stats.ms_shade;
+}
+
+// The Embree oracle's frame at the same samples: its scene build and every sample's ray (visibility only, no
+// shading, which favours it), robust mode as `raster compare` uses by default.
+constexpr int kOracleSamples = 16;
+std::string oracle_name(const BenchScene& s) { return "BM_Oracle/" + s.name + "/samples:" + std::to_string(kOracleSamples); }
+
+void bm_oracle(benchmark::State& state, const BenchScene* s) {
+    const raster::Scene scene = with_samples(s->scene, kOracleSamples, false);
+    const raster::TransformedScene geometry =
+        raster::run_vertex_stage(scene, raster::vertex_stage_needs(scene.settings.shading));
+    raster::oracle::OracleOptions options;
+    options.threads = kThreads;
+    raster::VisibilityBuffer buffer;  // reused frame to frame
+    for (auto _ : state) {
+        raster::oracle::render_oracle(scene, geometry, options, buffer);
+        benchmark::DoNotOptimize(buffer.triangle.data());
+    }
 }
 
 #ifdef RASTER_HAVE_OSMESA
@@ -309,6 +329,20 @@ void print_summary(const SummaryReporter& reporter, const std::vector<std::uniqu
                         std::isnan(r) ? "not measured" : r <= 1.0 ? "met" : "missed");
         }
     }
+
+    // Against the Embree oracle at 16 samples: how many times faster raster's frame is (target: at least 20x).
+    std::printf("\nAgainst the Embree oracle at %d samples (its visibility only; target: raster at least 20x faster):\n",
+                kOracleSamples);
+    std::printf("  %-10s %10s %14s %14s %12s %12s\n", "scene", "oracle ms", "raster ssaa ms", "raster msaa ms",
+                "ssaa speedup", "msaa speedup");
+    for (const auto& s : scenes) {
+        const double oracle = reporter.median_ms(oracle_name(*s), SummaryReporter::wall);
+        const double ssaa = reporter.median_ms(raster_name(*s, {kOracleSamples, false}), SummaryReporter::wall);
+        const double msaa = reporter.median_ms(raster_name(*s, {kOracleSamples, true}), SummaryReporter::wall);
+        std::printf("  %-10s %10s %14s %14s %11sx %11sx\n", s->name.c_str(), format_number(oracle).c_str(),
+                    format_number(ssaa).c_str(), format_number(msaa).c_str(), format_number(oracle / ssaa).c_str(),
+                    format_number(oracle / msaa).c_str());
+    }
 }
 
 // Loads the scenes asked for (all by default); a missing or unreadable scene is skipped with a message.
@@ -389,6 +423,12 @@ int main(int argc, char** argv) {
                 ->Unit(benchmark::kMillisecond)
                 ->MeasureProcessCPUTime()
                 ->UseRealTime();
+
+    for (const auto& s : scenes)
+        benchmark::RegisterBenchmark(oracle_name(*s).c_str(), bm_oracle, s.get())
+            ->Unit(benchmark::kMillisecond)
+            ->MeasureProcessCPUTime()
+            ->UseRealTime();
 
     bool checked = true;
     std::string llvmpipe_absent;
