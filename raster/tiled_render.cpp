@@ -86,6 +86,7 @@ struct TileScratch {
     std::vector<float> depth;
     std::vector<uint32_t> winner;
     std::array<double, kBlocksPerTileSide * kBlocksPerTileSide> block_far;  // hierarchical Z bounds
+    std::array<uint32_t, kBlocksPerTileSide * kBlocksPerTileSide> block_filled;  // non-empty samples per block
     size_t hidden_blocks = 0;                                               // blocks it skipped, this tile
     // For the samples of one block row, j = pixel * samples + sample: each edge's offset from the edge value at
     // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the coverage flags.
@@ -125,25 +126,30 @@ inline void row_coverage(const int64_t (&base)[3], const int64_t* offset0, const
         covered[j] = ((base[0] + offset0[j]) | (base[1] + offset1[j]) | (base[2] + offset2[j])) >= 0;
 }
 
-// The smallest stored key of the block at (block_x0, block_y0) (its part inside the image), -inf while any of its
-// samples is empty: a triangle whose key nowhere exceeds it loses every depth test in the block.
+// Samples of the block at (block_x0, block_y0) inside the image.
+inline uint32_t block_samples(const TileJob& job, int block_x0, int block_y0) {
+    return static_cast<uint32_t>((std::min(block_x0 + kBlockSize, job.width) - block_x0) *
+                                 (std::min(block_y0 + kBlockSize, job.height) - block_y0) * job.samples);
+}
+
+// The smallest stored key of a block whose samples are all covered: a triangle whose key nowhere exceeds it loses
+// every depth test in the block. Eight independent running minima, so the loop vectorizes without reassociating.
 inline double block_min_key(const TileJob& job, const TileScratch& scratch, int block_x0, int block_y0, int tile_x,
                             int tile_y) {
+    constexpr int kLanes = 8;
     const int S = job.samples;
     const size_t n = static_cast<size_t>(std::min(block_x0 + kBlockSize, job.width) - block_x0) * S;
-    float smallest = std::numeric_limits<float>::infinity();
-    bool empty = false;
+    float lane[kLanes];
+    std::fill(lane, lane + kLanes, std::numeric_limits<float>::infinity());
     for (int py = block_y0; py < std::min(block_y0 + kBlockSize, job.height); ++py) {
-        const size_t row_start = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(block_x0 - tile_x)) * S;
-        const float* depth = scratch.depth.data() + row_start;
-        const uint32_t* winner = scratch.winner.data() + row_start;
-        for (size_t j = 0; j < n; ++j) {
-            empty |= winner[j] == kNoTriangle;
-            smallest = std::min(smallest, depth[j]);
-        }
+        const float* depth =
+            scratch.depth.data() + (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(block_x0 - tile_x)) * S;
+        size_t j = 0;
+        for (; j + kLanes <= n; j += kLanes)
+            for (int k = 0; k < kLanes; ++k) lane[k] = depth[j + k] < lane[k] ? depth[j + k] : lane[k];
+        for (; j < n; ++j) lane[0] = depth[j] < lane[0] ? depth[j] : lane[0];
     }
-    if (empty) return kNoBound;
-    return static_cast<double>(smallest);
+    return static_cast<double>(*std::min_element(lane, lane + kLanes));
 }
 
 // Rasterizes one setup into the tile: its bounding box clipped to the tile, in 8x8-pixel blocks that are
@@ -175,10 +181,13 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
             }
             if (reject) continue;
             double* block_far = nullptr;
+            uint32_t filled_before = 0, newly_filled = 0;
             const int block_x0 = bx / kBlockSize * kBlockSize, block_y0 = by / kBlockSize * kBlockSize;
+            const size_t block = static_cast<size_t>((block_y0 - tile_y) / kBlockSize) * kBlocksPerTileSide +
+                                 static_cast<size_t>((block_x0 - tile_x) / kBlockSize);
             if (job.hierarchical_z) {
-                block_far = &scratch.block_far[static_cast<size_t>((block_y0 - tile_y) / kBlockSize) * kBlocksPerTileSide +
-                                               static_cast<size_t>((block_x0 - tile_x) / kBlockSize)];
+                block_far = &scratch.block_far[block];
+                filled_before = scratch.block_filled[block];
                 const double nearest = max_key_over(t, depth, bx, block_x1, by, block_y1, F, job.bounds);
                 if (nearest + key_rounding_margin(nearest, depth.fixed24) <= *block_far) {  // all hidden
                     ++scratch.hidden_blocks;
@@ -201,14 +210,21 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
                     const int64_t e2 = base[2] + scratch.row_offset[2][j] - t.bias[2];
                     const float d = depth.at(e1, e2);
                     const size_t at = row_start + j;
-                    if (scratch.winner[at] == kNoTriangle || d > scratch.depth[at]) {
+                    const bool empty = scratch.winner[at] == kNoTriangle;
+                    if (empty || d > scratch.depth[at]) {
                         scratch.depth[at] = d;
                         scratch.winner[at] = index;
                         wrote = true;
+                        newly_filled += empty;
                     }
                 }
             }
-            if (block_far && wrote) *block_far = block_min_key(job, scratch, block_x0, block_y0, tile_x, tile_y);
+            if (block_far && wrote) {
+                // While any sample of the block is empty the bound stays -inf; once all are covered it is their minimum.
+                const uint32_t filled = scratch.block_filled[block] = filled_before + newly_filled;
+                if (filled == block_samples(job, block_x0, block_y0))
+                    *block_far = block_min_key(job, scratch, block_x0, block_y0, tile_x, tile_y);
+            }
         }
     }
 }
@@ -343,6 +359,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
         const int tile_x = static_cast<int>(tile % bins.tiles_x) * kTileSize;
         const int tile_y = static_cast<int>(tile / bins.tiles_x) * kTileSize;
         scratch.block_far.fill(kNoBound);
+        scratch.block_filled.fill(0);
         scratch.hidden_blocks = 0;
         if (bins.setups[tile].empty() && !visibility) {  // nothing drawn here: background only
             const int x1 = std::min(settings.width, tile_x + kTileSize), y1 = std::min(settings.height, tile_y + kTileSize);
