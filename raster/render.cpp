@@ -37,19 +37,21 @@ uint64_t frame_bytes(const RenderSettings& settings) {
     return pixels * uint64_t(std::max(settings.samples, 0)) * 28u + pixels * 4u;
 }
 
-std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry, int threads,
-                                            const PipelineStages& stages, RenderStats& stats) {
+void set_up_triangles_into(const Scene& scene, const TransformedScene& geometry, int threads,
+                           const PipelineStages& stages, RenderStats& stats, RenderWorkspace& workspace) {
     // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
     const RenderSettings& settings = scene.settings;
     const ClipVolume volume = clip_volume_for(scene.camera, settings);
     const SetupParams setup_params = setup_params_for(settings);
     const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
-    std::vector<std::vector<TriangleSetup>> chunk_setups(chunks);
+    auto& chunk_setups = workspace.chunk_setups;
+    chunk_setups.resize(chunks);
     std::vector<size_t> chunk_clipped(chunks, 0);
     parallel_for(chunks, threads, [&](size_t chunk) {
         const size_t begin = chunk * kSetupChunk;
         const size_t end = std::min(geometry.triangles.size(), begin + kSetupChunk);
         auto& out = chunk_setups[chunk];
+        out.clear();
         out.reserve(end - begin);
         for (size_t tri = begin; tri < end; ++tri) {
             const TriangleIndices& v = geometry.triangles[tri];
@@ -62,13 +64,20 @@ std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const Transforme
             stages.setup(polygon, static_cast<uint32_t>(tri), setup_params, out);
         }
     });
-    std::vector<TriangleSetup> setups;
+    std::vector<TriangleSetup>& setups = workspace.setups;
+    setups.clear();
     for (size_t chunk = 0; chunk < chunks; ++chunk) {
         setups.insert(setups.end(), chunk_setups[chunk].begin(), chunk_setups[chunk].end());
         stats.clipped += chunk_clipped[chunk];
     }
     stats.rasterized = setups.size();
-    return setups;
+}
+
+std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry, int threads,
+                                            const PipelineStages& stages, RenderStats& stats) {
+    RenderWorkspace workspace;
+    set_up_triangles_into(scene, geometry, threads, stages, stats, workspace);
+    return std::move(workspace.setups);
 }
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
@@ -111,7 +120,8 @@ void render_into(const Scene& scene, const RenderOptions& options, RenderResult&
     const TransformedScene geometry = run_vertex_stage_timed(scene, stages, stats);
 
     auto stage_start = Clock::now();
-    const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, options.threads, stages, stats);
+    set_up_triangles_into(scene, geometry, options.threads, stages, stats, result.workspace);
+    const std::vector<TriangleSetup>& setups = result.workspace.setups;
     stats.ms_setup = milliseconds_since(stage_start);
 
     stage_start = Clock::now();

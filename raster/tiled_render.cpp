@@ -21,7 +21,7 @@ using Clock = std::chrono::steady_clock;
 // The tiles of the frame and, for each, the setups that may cover one of its samples, in draw order.
 struct Bins {
     int tiles_x = 0, tiles_y = 0;
-    std::vector<std::vector<uint32_t>> setups;
+    std::vector<std::vector<uint32_t>>& setups;  // the workspace's lists, reused frame to frame
 };
 
 // Smallest and largest value of an edge function over the sample positions of the pixel rectangle
@@ -44,11 +44,10 @@ inline EdgeRange edge_range(const TriangleSetup& t, int i, int x0, int x1, int y
 }
 
 Bins bin_setups(const std::vector<TriangleSetup>& setups, int width, int height, int fixed_bits,
-                const SampleBounds& bounds) {
-    Bins bins;
-    bins.tiles_x = (width + kTileSize - 1) / kTileSize;
-    bins.tiles_y = (height + kTileSize - 1) / kTileSize;
+                const SampleBounds& bounds, std::vector<std::vector<uint32_t>>& lists) {
+    Bins bins{(width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, lists};
     bins.setups.resize(static_cast<size_t>(bins.tiles_x) * bins.tiles_y);
+    for (std::vector<uint32_t>& list : bins.setups) list.clear();
     for (uint32_t index = 0; index < setups.size(); ++index) {
         const TriangleSetup& t = setups[index];
         const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
@@ -315,7 +314,8 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
     const TransformedScene geometry = run_vertex_stage_timed(scene, stages, stats);
 
     auto stage_start = Clock::now();
-    const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, options.threads, stages, stats);
+    set_up_triangles_into(scene, geometry, options.threads, stages, stats, result.workspace);
+    const std::vector<TriangleSetup>& setups = result.workspace.setups;
     const int fixed_bits = fixed_bits_for(settings.snap_bits);
     const FixedSampleOffsets offsets =
         fixed_sample_offsets(stages.sample_offsets(settings.samples, settings.pattern), fixed_bits);
@@ -324,7 +324,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
                               *std::max_element(offsets.x.begin(), offsets.x.end()),
                               *std::min_element(offsets.y.begin(), offsets.y.end()),
                               *std::max_element(offsets.y.begin(), offsets.y.end())};
-    const Bins bins = bin_setups(setups, settings.width, settings.height, fixed_bits, bounds);
+    const Bins bins = bin_setups(setups, settings.width, settings.height, fixed_bits, bounds, result.workspace.tile_bins);
     stats.ms_setup = milliseconds_since(stage_start);
 
     stage_start = Clock::now();
