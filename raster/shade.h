@@ -29,6 +29,10 @@ LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& norm
                                 const glm::vec3& ambient_light, SpecularModel model);
 
 // The signature of evaluate_lighting, so a pipeline can be given another lighting model.
+// base^exponent for the specular highlight: by repeated squaring for integer exponents n in [0, 256] (relative error
+// at most about n 2^-24, invisible in 8-bit output), std::pow otherwise.
+float specular_power(float base, float exponent);
+
 using LightingFunction = LightingTerms (*)(const glm::vec3&, const glm::vec3&, const glm::vec3&, const Material&,
                                            const std::vector<Light>&, const glm::vec3&, SpecularModel);
 

@@ -1,6 +1,7 @@
 // Lighting: hand-computed Blinn-Phong and Phong values, attenuation, one-sidedness, and the shading modes.
 #include "raster/shade.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -44,6 +45,20 @@ TEST(Lighting, blinnAndPhongLobesDifferAsTheirFormulasSay) {
     EXPECT_NEAR(blinn.diffuse.x, 0.5f * c45, 1e-5f);
     EXPECT_NEAR(blinn.specular.x, 0.25f * c22 * c22, 1e-5f);
     EXPECT_NEAR(phong.specular.x, 0.25f * c45 * c45, 1e-5f);
+}
+
+TEST(Lighting, specularPowerIsWithinItsRoundingBoundOfPowForIntegerExponentsAndIsPowOtherwise) {
+    for (float exponent : {0.0f, 1.0f, 2.0f, 7.0f, 32.0f, 40.0f, 60.0f, 128.0f, 255.0f})
+        for (float base : {0.0f, 0.013f, 0.5f, 0.9f, 0.999f, 1.0f}) {
+            const double exact = std::pow(double(base), double(exponent));
+            // A rounding (relative u = 2^-24) made when the partial power is x^k is raised to the power n / k that is
+            // still to come, so the relative errors add up to at most (n - 1) u, to first order (n u bounds it).
+            EXPECT_NEAR(specular_power(base, exponent), exact, std::max(1.0, double(exponent)) * 0x1p-24 * exact + 1e-38)
+                << base << "^" << exponent;
+        }
+    EXPECT_EQ(specular_power(0.5f, 2.5f), std::pow(0.5f, 2.5f));     // not an integer: std::pow itself
+    EXPECT_EQ(specular_power(0.5f, 300.0f), std::pow(0.5f, 300.0f));  // beyond the squaring range: std::pow
+    EXPECT_EQ(specular_power(0.5f, 0.0f), 1.0f);
 }
 
 TEST(Lighting, lightBehindTheSurfaceAddsNothing) {
