@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+
+#include "tests/cli_run.h"
 #include <nlohmann/json.hpp>
 
 #include "apps/cli.h"
@@ -15,17 +17,8 @@ namespace fs = std::filesystem;
 
 const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
 
-struct CliRun {
-    int code;
-    std::string out, err;
-};
-
-CliRun raster(std::vector<std::string> args) {
-    args.insert(args.begin(), "raster");
-    std::ostringstream out, err;
-    const int code = run(args, out, err);
-    return {code, out.str(), err.str()};
-}
+using test_support::CliRun;
+using test_support::run_raster;
 
 fs::path fresh_dir(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / ("raster_compare_cli_" + name + "_" + std::to_string(::getpid()));
@@ -36,7 +29,7 @@ fs::path fresh_dir(const std::string& name) {
 
 TEST(CompareCli, writesTheJsonAndTheDiffMapAndExitsZeroWithoutGenuineDisagreements) {
     const fs::path dir = fresh_dir("ok");
-    const CliRun r = raster({"compare", kCorpus + "single_triangle.yaml", "--samples", "4", "--json",
+    const CliRun r = run_raster({"compare", kCorpus + "single_triangle.yaml", "--samples", "4", "--json",
                           (dir / "out.json").string(), "--diff", (dir / "diff.png").string()});
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("genuine    0"), std::string::npos) << r.out;
@@ -56,25 +49,25 @@ TEST(CompareCli, writesTheJsonAndTheDiffMapAndExitsZeroWithoutGenuineDisagreemen
 
 TEST(CompareCli, badInputExitsTwoAndWritesNothing) {
     const fs::path dir = fresh_dir("bad");
-    EXPECT_EQ(raster({"compare", (dir / "missing.yaml").string(), "--json", (dir / "out.json").string()}).code, 2);
-    const CliRun bad_samples = raster({"compare", kCorpus + "single_triangle.yaml", "--samples", "3", "--json",
+    EXPECT_EQ(run_raster({"compare", (dir / "missing.yaml").string(), "--json", (dir / "out.json").string()}).code, 2);
+    const CliRun bad_samples = run_raster({"compare", kCorpus + "single_triangle.yaml", "--samples", "3", "--json",
                                     (dir / "out.json").string()});
     EXPECT_EQ(bad_samples.code, 2);
     EXPECT_NE(bad_samples.err.find("1, 2, 4, 8 or 16"), std::string::npos) << bad_samples.err;
-    EXPECT_EQ(raster({"compare"}).code, 2);
+    EXPECT_EQ(run_raster({"compare"}).code, 2);
     EXPECT_FALSE(fs::exists(dir / "out.json"));
     fs::remove_all(dir);
 }
 
 TEST(CompareCli, anOutputThatCannotBeWrittenExitsThree) {
-    const CliRun r = raster({"compare", kCorpus + "single_triangle.yaml", "--json", "/nonexistent-dir/out.json"});
+    const CliRun r = run_raster({"compare", kCorpus + "single_triangle.yaml", "--json", "/nonexistent-dir/out.json"});
     EXPECT_EQ(r.code, 3);
     EXPECT_NE(r.err.find("out.json"), std::string::npos) << r.err;
 }
 
 TEST(CompareCli, theFastOracleIsSelectable) {
     const fs::path dir = fresh_dir("fast");
-    const CliRun r = raster({"compare", kCorpus + "interpenetrating.yaml", "--fast-oracle", "--json", (dir / "out.json").string()});
+    const CliRun r = run_raster({"compare", kCorpus + "interpenetrating.yaml", "--fast-oracle", "--json", (dir / "out.json").string()});
     EXPECT_EQ(r.code, 0) << r.err;
     std::ifstream file(dir / "out.json");
     EXPECT_EQ(nlohmann::json::parse(file)["oracle_mode"], "fast");

@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include <gtest/gtest.h>
+
+#include "tests/cli_run.h"
 #include <nlohmann/json.hpp>
 
 #include "apps/cli.h"
@@ -25,17 +27,8 @@ using test_support::TempDir;
 
 const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
 
-struct CliRun {
-    int code;
-    std::string out, err;
-};
-
-CliRun raster(std::vector<std::string> args) {
-    args.insert(args.begin(), "raster");
-    std::ostringstream out, err;
-    const int code = cli::run(args, out, err);
-    return {code, out.str(), err.str()};
-}
+using test_support::CliRun;
+using test_support::run_raster;
 
 std::string read_text(const fs::path& path) {
     std::ifstream file(path, std::ios::binary);
@@ -292,7 +285,7 @@ TEST(TradeoffCli, writesParsableCsvJsonAndSvgWholeAndOnlyThose) {
     const fs::path out = dir / "out";
     fs::create_directories(out);
     std::ofstream(out / "tradeoff.json") << "stale";
-    const CliRun r = raster({"tradeoff", scene.string(), "-o", out.string(), "--modes", "baseline,samples4,fastest",
+    const CliRun r = run_raster({"tradeoff", scene.string(), "-o", out.string(), "--modes", "baseline,samples4,fastest",
                              "--runs", "1", "--reference-grid", "4"});
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("samples4"), std::string::npos) << r.out;
@@ -353,12 +346,12 @@ TEST(TradeoffCli, theSvgEscapesNamesAndStaysWellFormed) {
 }
 
 TEST(TradeoffCli, helpNamesEveryFlagAndListModesNamesEveryMode) {
-    const CliRun help = raster({"tradeoff", "--help"});
+    const CliRun help = run_raster({"tradeoff", "--help"});
     EXPECT_EQ(help.code, 0);
     for (const char* flag :
          {"-o", "--modes", "--runs", "--reference-grid", "--fast-oracle", "--threads", "--list-modes"})
         EXPECT_NE(help.out.find(flag), std::string::npos) << flag;
-    const CliRun list = raster({"tradeoff", "--list-modes"});
+    const CliRun list = run_raster({"tradeoff", "--list-modes"});
     EXPECT_EQ(list.code, 0);
     for (const TradeoffMode& mode : tradeoff_modes())
         EXPECT_NE(list.out.find(mode.name + " "), std::string::npos) << mode.name;
@@ -367,25 +360,25 @@ TEST(TradeoffCli, helpNamesEveryFlagAndListModesNamesEveryMode) {
 TEST(TradeoffCli, badInputExitsTwoNamingTheProblemAndWritesNothing) {
     TempDir dir;
     const fs::path out = dir / "out";
-    const CliRun missing = raster({"tradeoff", (dir / "missing.yaml").string(), "-o", out.string()});
+    const CliRun missing = run_raster({"tradeoff", (dir / "missing.yaml").string(), "-o", out.string()});
     EXPECT_EQ(missing.code, 2);
     EXPECT_NE(missing.err.find("missing.yaml"), std::string::npos) << missing.err;
 
     const CliRun unknown =
-        raster({"tradeoff", kCorpus + "single_triangle.yaml", "-o", out.string(), "--modes", "baseline,snap5"});
+        run_raster({"tradeoff", kCorpus + "single_triangle.yaml", "-o", out.string(), "--modes", "baseline,snap5"});
     EXPECT_EQ(unknown.code, 2);
     EXPECT_NE(unknown.err.find("unknown mode 'snap5'"), std::string::npos) << unknown.err;
     EXPECT_NE(unknown.err.find("grid8x8"), std::string::npos) << unknown.err;  // lists the known ones
 
     const fs::path huge = small_scene(dir, "single_triangle.yaml", 4000, 4000);
-    const CliRun too_big = raster({"tradeoff", huge.string(), "--reference-grid", "16", "-o", out.string()});
+    const CliRun too_big = run_raster({"tradeoff", huge.string(), "--reference-grid", "16", "-o", out.string()});
     EXPECT_EQ(too_big.code, 2);
     EXPECT_NE(too_big.err.find("single_triangle.yaml"), std::string::npos) << too_big.err;
     EXPECT_NE(too_big.err.find("--reference-grid"), std::string::npos) << too_big.err;
 
-    EXPECT_EQ(raster({"tradeoff", "-o", out.string()}).code, 2);  // no scene
-    EXPECT_EQ(raster({"tradeoff", kCorpus + "single_triangle.yaml", "--runs", "0", "-o", out.string()}).code, 2);
-    EXPECT_EQ(raster({"tradeoff", kCorpus + "single_triangle.yaml", "--reference-grid", "17", "-o", out.string()}).code,
+    EXPECT_EQ(run_raster({"tradeoff", "-o", out.string()}).code, 2);  // no scene
+    EXPECT_EQ(run_raster({"tradeoff", kCorpus + "single_triangle.yaml", "--runs", "0", "-o", out.string()}).code, 2);
+    EXPECT_EQ(run_raster({"tradeoff", kCorpus + "single_triangle.yaml", "--reference-grid", "17", "-o", out.string()}).code,
               2);
     EXPECT_FALSE(fs::exists(out));
 }
@@ -394,7 +387,7 @@ TEST(TradeoffCli, anOutputThatCannotBeWrittenExitsThree) {
     TempDir dir;
     const fs::path scene = small_scene(dir, "single_triangle.yaml", 16, 12);
     const fs::path blocker = dir.write("blocker", "a file where the output directory should be");
-    const CliRun r = raster({"tradeoff", scene.string(), "-o", (blocker / "out").string(), "--modes", "baseline",
+    const CliRun r = run_raster({"tradeoff", scene.string(), "-o", (blocker / "out").string(), "--modes", "baseline",
                              "--runs", "1", "--reference-grid", "2"});
     EXPECT_EQ(r.code, 3);
     EXPECT_NE(r.err.find("blocker"), std::string::npos) << r.err;
@@ -404,12 +397,12 @@ TEST(TradeoffReport, theReportLinksThePlotAndTheTable) {
     TempDir dir;
     const fs::path scene = small_scene(dir, "single_triangle.yaml", 32, 24);
     const fs::path results = dir / "results";
-    ASSERT_EQ(raster({"tradeoff", scene.string(), "-o", results.string(), "--modes", "baseline,samples4", "--runs", "1",
+    ASSERT_EQ(run_raster({"tradeoff", scene.string(), "-o", results.string(), "--modes", "baseline,samples4", "--runs", "1",
                       "--reference-grid", "2"})
                   .code,
               0);
     const fs::path report = dir / "report";
-    const CliRun r = raster({"report", scene.string(), "-o", report.string(), "--tradeoff", results.string()});
+    const CliRun r = run_raster({"report", scene.string(), "-o", report.string(), "--tradeoff", results.string()});
     ASSERT_EQ(r.code, 0) << r.err;
     const std::string html = read_text(report / "index.html");
     EXPECT_NE(html.find("src=\"tradeoff/pareto.svg\""), std::string::npos);
@@ -422,15 +415,15 @@ TEST(TradeoffReport, theReportLinksThePlotAndTheTable) {
     EXPECT_EQ(nlohmann::json::parse(read_text(report / "summary.json"))["tradeoff"], "tradeoff/tradeoff.json");
 
     // Run again without --tradeoff: the copy now in report/tradeoff/ is found and linked in place.
-    ASSERT_EQ(raster({"report", scene.string(), "-o", report.string()}).code, 0);
+    ASSERT_EQ(run_raster({"report", scene.string(), "-o", report.string()}).code, 0);
     EXPECT_NE(read_text(report / "index.html").find("src=\"tradeoff/pareto.svg\""), std::string::npos);
 
     // A report without trade-off results has no such section; a --tradeoff folder without results is bad input.
     const fs::path plain = dir / "plain";
-    ASSERT_EQ(raster({"report", scene.string(), "-o", plain.string()}).code, 0);
+    ASSERT_EQ(run_raster({"report", scene.string(), "-o", plain.string()}).code, 0);
     EXPECT_EQ(read_text(plain / "index.html").find("Speed against accuracy"), std::string::npos);
     const CliRun bad =
-        raster({"report", scene.string(), "-o", (dir / "bad").string(), "--tradeoff", (dir / "none").string()});
+        run_raster({"report", scene.string(), "-o", (dir / "bad").string(), "--tradeoff", (dir / "none").string()});
     EXPECT_EQ(bad.code, 2);
     EXPECT_NE(bad.err.find("tradeoff.json"), std::string::npos) << bad.err;
     EXPECT_FALSE(fs::exists(dir / "bad"));

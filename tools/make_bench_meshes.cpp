@@ -25,6 +25,8 @@
 #include <utility>
 #include <vector>
 
+#include "tools/vec3.h"
+
 namespace {
 
 constexpr int kExitOk = 0;
@@ -35,19 +37,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 // ------------------------------------------------------------------------------------------------ vectors
 
-struct Vec3 {
-    double x = 0, y = 0, z = 0;
-};
-Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-double length(Vec3 a) { return std::sqrt(dot(a, a)); }
-Vec3 normalized(Vec3 a) {
-    const double l = length(a);
-    return l > 0 ? (1.0 / l) * a : Vec3{};
-}
+using namespace raster::tools;  // Vec3 and its operations (tools/vec3.h)
 
 // ------------------------------------------------------------------------------------------------ meshes
 

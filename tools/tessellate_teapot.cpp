@@ -34,6 +34,8 @@
 #include <utility>
 #include <vector>
 
+#include "tools/vec3.h"
+
 namespace {
 
 constexpr int kExitOk = 0;
@@ -45,17 +47,7 @@ constexpr long long kMaxPatches = 100000;
 constexpr long long kMaxControlPoints = 10000000;
 constexpr double kWeldTolerance = 1e-6;
 
-struct Vec3 {
-  double x = 0, y = 0, z = 0;
-};
-Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double length(Vec3 a) { return std::sqrt(dot(a, a)); }
+using namespace raster::tools;  // Vec3 and its operations (tools/vec3.h)
 
 using Tri = std::array<std::uint32_t, 3>;
 
