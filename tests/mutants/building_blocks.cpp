@@ -16,7 +16,12 @@ std::string number(float value) {
     return text;
 }
 
-std::string vector(const glm::vec3& v) { return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]"; }
+std::string vector(const glm::vec3& v) {
+    char text[128];  // formatted in one go: g++ 12 warns falsely (-Wrestrict) on "literal" + std::string&&
+    std::snprintf(text, sizeof text, "[%.9g, %.9g, %.9g]", static_cast<double>(v.x), static_cast<double>(v.y),
+                  static_cast<double>(v.z));
+    return text;
+}
 
 }  // namespace
 
