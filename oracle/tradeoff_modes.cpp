@@ -1,6 +1,8 @@
 // The catalogue of speed/accuracy modes: one-axis variations of a scene's settings and three presets.
 #include "oracle/tradeoff_modes.h"
 
+#include <utility>
+
 namespace raster::oracle {
 namespace {
 
@@ -18,6 +20,18 @@ TradeoffMode standard_samples(int samples) {
             s.samples = samples;
             s.pattern = SamplePattern::standard;
         }};
+}
+
+// A preset: every axis set at once, whatever the scene asked for.
+TradeoffMode preset(std::string name, std::string description, int snap_bits, int samples, SamplePattern pattern,
+                    bool msaa, PrecisionModes precision) {
+    return {std::move(name), std::move(description), [=](RenderSettings& s) {
+                s.snap_bits = snap_bits;
+                s.samples = samples;
+                s.pattern = pattern;
+                s.msaa = msaa;
+                s.modes = precision;
+            }};
 }
 
 TradeoffMode grid(int side) {
@@ -66,33 +80,18 @@ std::vector<TradeoffMode> make_catalogue() {
     modes.push_back({"hiz-on", "hierarchical-Z culling on", [](RenderSettings& s) { s.modes.hierarchical_z = true; }});
     modes.push_back(
         {"hiz-off", "hierarchical-Z culling off", [](RenderSettings& s) { s.modes.hierarchical_z = false; }});
-    modes.push_back(
-        {"fastest", "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band", [](RenderSettings& s) {
-             s.snap_bits = 4;
-             s.samples = 1;
-             s.pattern = SamplePattern::standard;
-             s.msaa = false;
-             s.modes = {EdgeArithmetic::float32, Interpolation::affine, DepthFormat::fixed24, Clipping::guard_band,
-                        true};
-         }});
-    modes.push_back(
-        {"balanced", "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, guard band", [](RenderSettings& s) {
-             s.snap_bits = 8;
-             s.samples = 4;
-             s.pattern = SamplePattern::standard;
-             s.msaa = true;
-             s.modes = {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
-                        Clipping::guard_band, true};
-         }});
-    modes.push_back(
-        {"exact", "16 bits, fixed edges, 8x8 grid SSAA, perspective, reversed-Z, full clipping", [](RenderSettings& s) {
-             s.snap_bits = 16;
-             s.samples = 64;
-             s.pattern = SamplePattern::grid;
-             s.msaa = false;
-             s.modes = {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z, Clipping::full,
-                        true};
-         }});
+    modes.push_back(preset("fastest", "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band", 4, 1,
+                           SamplePattern::standard, false,
+                           {EdgeArithmetic::float32, Interpolation::affine, DepthFormat::fixed24,
+                            Clipping::guard_band, true}));
+    modes.push_back(preset("balanced", "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, guard band",
+                           8, 4, SamplePattern::standard, true,
+                           {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
+                            Clipping::guard_band, true}));
+    modes.push_back(preset("exact", "16 bits, fixed edges, 8x8 grid SSAA, perspective, reversed-Z, full clipping",
+                           16, 64, SamplePattern::grid, false,
+                           {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
+                            Clipping::full, true}));
     return modes;
 }
 

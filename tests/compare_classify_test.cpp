@@ -15,11 +15,8 @@ namespace raster::oracle {
 namespace {
 
 using testing::camera_at_origin;
+using testing::reference_for;
 using testing::scene_with_triangles;
-
-ReferenceGeometry reference_for(const Scene& scene) {
-    return ReferenceGeometry(scene, run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading)));
-}
 
 SampleEntry covered_by(uint32_t id, const ReferenceGeometry& reference, const glm::dvec2& screen) {
     const ExactHit hit = reference.hit(id, screen);

@@ -1,4 +1,5 @@
-// Hand-made scenes for the oracle's tests: unlit triangles (one mesh each) in front of a camera, built in code.
+// Hand-made scenes for the oracle's tests: unlit triangles (one mesh each) in front of a camera, built in code,
+// and their exact reference geometry.
 #pragma once
 
 #include <array>
@@ -7,7 +8,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "oracle/reference_geometry.h"
 #include "raster/scene.h"
+#include "raster/vertex_stage.h"
 
 namespace raster::oracle::testing {
 
@@ -42,6 +45,11 @@ inline Camera camera_at_origin(float fov_degrees = 45.0f, float near = 0.1f, flo
     camera.near = near;
     camera.far = far;
     return camera;
+}
+
+// The reference geometry of a scene, from the real vertex stage's output (as the comparator builds it).
+inline ReferenceGeometry reference_for(const Scene& scene) {
+    return ReferenceGeometry(scene, run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading)));
 }
 
 }  // namespace raster::oracle::testing
