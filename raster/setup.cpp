@@ -43,6 +43,12 @@ void round_edges_to_float(TriangleSetup& t) {
     }
 }
 
+// The side planes' factor: 1 for full clipping, the guard band's for guard-band clipping (conventions.h).
+double side_factor(const RenderSettings& settings) {
+    if (settings.modes.clipping != Clipping::guard_band) return 1.0;
+    return guard_band_factor(settings.width, settings.height, fixed_bits_for(settings.snap_bits));
+}
+
 }  // namespace
 
 double depth_key(double reversed_z, DepthFormat format) {
@@ -55,8 +61,7 @@ double depth_key(double reversed_z, DepthFormat format) {
 
 SetupParams setup_params_for(const RenderSettings& settings) {
     SetupParams params{settings.width, settings.height, settings.snap_bits};
-    if (settings.modes.clipping == Clipping::guard_band)
-        params.side = guard_band_factor(settings.width, settings.height, fixed_bits_for(settings.snap_bits));
+    params.side = side_factor(settings);
     params.edges = settings.modes.edges;
     params.interpolation = settings.modes.interpolation;
     params.depth = settings.modes.depth;
@@ -64,7 +69,7 @@ SetupParams setup_params_for(const RenderSettings& settings) {
 }
 
 ClipVolume clip_volume_for(const Camera& camera, const RenderSettings& settings) {
-    return ClipVolume{camera.near, camera.far, setup_params_for(settings).side};
+    return ClipVolume{camera.near, camera.far, side_factor(settings)};
 }
 
 bool faces_front(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
