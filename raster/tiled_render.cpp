@@ -78,7 +78,9 @@ constexpr double kNoBound = -std::numeric_limits<double>::infinity();
 // How far a sample's key can sit above the plane's double value at the block's corners: the plane's evaluation in
 // double and the key's rounding to float (2^-24 relative) stay well inside a relative 2^-22; fixed24 rounds to the
 // nearest level, up to half a level more.
-inline double key_rounding_margin(double key, bool fixed24) { return std::fabs(key) * 0x1p-22 + (fixed24 ? 0.5 : 0.0) + 1e-300; }
+inline double key_rounding_margin(double key, bool fixed24) {
+    return std::fabs(key) * 0x1p-22 + (fixed24 ? 0.5 : 0.0) + 1e-300;
+}
 
 // One worker's tile planes: depth and winning setup per sample, and the per-triangle sample constants.
 struct TileScratch {
