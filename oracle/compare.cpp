@@ -135,6 +135,10 @@ SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2
         if (on_clip_boundary(reference, involved[i], screen)) return SampleClass::clip_boundary;
     for (int i = 0; i < count; ++i)
         if (in_edge_band(reference, involved[i], screen)) return SampleClass::edge_band;
+    // Embree tests edge by edge, so beyond the band it may still show a triangle that exactly misses the sample.
+    if (oracle.triangle != kNoTriangle && !reference.contains(oracle.triangle, screen) &&
+        reference.embree_may_cover(oracle.triangle, screen))
+        return SampleClass::edge_band;
     if (count == 2 && depth_tie(reference, involved[0], involved[1], screen)) return SampleClass::depth_tie;
     return SampleClass::visibility;
 }

@@ -19,7 +19,8 @@ namespace raster::oracle {
 
 enum class SampleClass : uint8_t {
     agree,          // same triangle (within the barycentric, depth and colour bounds), or both empty
-    edge_band,      // ambiguous: within the radius of an edge of a triangle involved
+    edge_band,      // ambiguous: within the radius of an edge of a triangle involved, or where Embree's edge-by-edge
+                    // test may show a triangle that exactly misses the sample (precision.h, section 5)
     depth_tie,      // ambiguous: both triangles cover the sample and their depths are within the tie bound
     clip_boundary,  // ambiguous: the sample is where a triangle involved meets the near or far plane
     facing,         // ambiguous: culling is on and a triangle involved is too close to edge-on to call its facing

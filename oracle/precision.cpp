@@ -53,6 +53,46 @@ glm::dvec3 embree_barycentric_error(const glm::dvec3 v[3], const glm::dvec3& dir
     return {error_first, error_u, error_v};
 }
 
+namespace {
+
+// Embree's U, V, W for the ray from the eye along `direction`, exactly: U pairs with v1 (its edge runs v0 -> v2),
+// V with v2 (edge v1 -> v0), W with v0 (edge v2 -> v1); each is dot(cross(b - a, b + a), D) = 2 dot(b x a, D).
+glm::dvec3 pluecker_values(const glm::dvec3 v[3], const glm::dvec3& direction) {
+    return 2.0 * glm::dvec3(glm::dot(glm::cross(v[2], v[0]), direction), glm::dot(glm::cross(v[0], v[1]), direction),
+                            glm::dot(glm::cross(v[1], v[2]), direction));
+}
+
+// How far 2 dot(b x a, D) moves when a and b move by at most ea and eb componentwise.
+double pluecker_vertex_error(const glm::dvec3& a, const glm::dvec3& ea, const glm::dvec3& b, const glm::dvec3& eb,
+                             const glm::dvec3& direction) {
+    return 2.0 * (cross_dot_magnitude(eb, glm::abs(a) + ea, direction) + cross_dot_magnitude(b, ea, direction));
+}
+
+}  // namespace
+
+glm::dvec3 embree_edge_uncertainty(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction) {
+    const double g = float_gamma(kEmbreeEdgeRoundings);
+    auto edge = [&](int a, int b) {  // the value 2 dot(v_b x v_a, D) of the edge a -> b
+        // Embree's float difference and sum of the oracle's vertices, in magnitude.
+        const glm::dvec3 moved = error[a] + error[b];
+        return pluecker_vertex_error(v[a], error[a], v[b], error[b], direction) +
+               g * cross_dot_magnitude(glm::abs(v[b] - v[a]) + moved, glm::abs(v[b] + v[a]) + moved, direction);
+    };
+    return {edge(0, 2), edge(1, 0), edge(2, 1)};
+}
+
+bool embree_may_cover(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction) {
+    const glm::dvec3 values = pluecker_values(v, direction);
+    const glm::dvec3 uncertainty = embree_edge_uncertainty(v, error, direction);
+    const double slack = 2.0 * kFloatUnitRoundoff * (1.0 + float_gamma(3)) *
+                         (std::fabs(values.x) + std::fabs(values.y) + std::fabs(values.z) + uncertainty.x +
+                          uncertainty.y + uncertainty.z);
+    const glm::dvec3 allowance = uncertainty + glm::dvec3(slack);
+    const bool all_positive = values.x >= -allowance.x && values.y >= -allowance.y && values.z >= -allowance.z;
+    const bool all_negative = values.x <= allowance.x && values.y <= allowance.y && values.z <= allowance.z;
+    return all_positive || all_negative;
+}
+
 double facing_uncertainty(const glm::dvec4 clip[3], const glm::dvec4 error[3]) {
     double exact = 1.0, moved = 1.0, moved_sum_norm = 1.0;
     for (int i = 0; i < 3; ++i) {

@@ -123,11 +123,35 @@ inline constexpr int kOracleBarycentricRoundings = 2;
 // barycentrics `bary` at the sample; infinite when E_S >= |S| (Embree's answer is then unconstrained).
 glm::dvec3 embree_barycentric_error(const glm::dvec3 v[3], const glm::dvec3& direction, const glm::dvec3& bary);
 
+// EMBREE'S COVERAGE. Embree decides a ray's hit from the signs of U, V and W: all >= -eps, or all <= eps, with
+// its own slack eps = ulp |U + V + W| (ulp = 2u). Each sign is exact for vertices moved by a little (section 2),
+// but the moves differ from edge to edge, so Embree's coverage is not that of any one moved triangle: it is the
+// set of rays within each edge's own uncertainty of that edge's plane through the eye. For a fat triangle that is
+// the edge band; for a needle, whose long edges run along one line, it reaches along that line beyond the tip;
+// for a triangle whose edges all pass within float error of the eye, it is every ray. With the exact vertices
+// v_i, the oracle's float vertices within e_i of them (gamma_8 of |V| |M| |p|, section 2), U = 2 dot(v2 x v0, D)
+// changes with the vertices by at most 2 (dot(|e_2| x| (|v0| + |e_0|), |D|) + dot(|v2| x| |e_0|, |D|)) and its
+// float evaluation adds gamma_8 M_U; so with B_U their sum, Embree may report a hit only when, for one sign s,
+//     s U >= -(B_U + eps_max), s V >= -(B_V + eps_max), s W >= -(B_W + eps_max)
+// where eps_max = 2u (1 + gamma_3) (|U| + |V| + |W| + B_U + B_V + B_W) bounds Embree's slack. The comparator uses
+// this for a sample where the oracle shows a triangle that exactly does not cover it (section 4's band aside):
+// when Embree may cover the sample, the disagreement is ambiguous (EDGE BAND).
+glm::dvec3 embree_edge_uncertainty(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction);
+bool embree_may_cover(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction);
+
 // --- 6. Clip boundary ----------------------------------------------------------------------------------------
 // raster's near and far clip edges sit where its float w crosses the plane: within the triangle's largest
 // clip-space w error (absolute, the DEPTH ERROR) of the exact plane, and then are snapped (r). A sample is on
 // the clip boundary of a triangle when the triangle's view-depth interval over the r-square, widened by the depth
 // error, contains near or far, and the r-square reaches the triangle (every barycentric's corner maximum >= 0).
+// THE EYE. A point at clip w with w <= E_w (the largest w error of the triangle's vertices) has no bounded screen
+// position (section 4: the denominator w - E_w is not positive). When the near plane is that close to the eye
+// (near <= 2 E_w) and some point of the triangle may be kept there by either renderer (w >= near - E_w, and
+// inside the side planes widened by the errors: |x| <= w + E_x + E_w, likewise y), the triangle's footprint is
+// unbounded: a triangle whose plane passes within E_w of the eye covers, in float, any sample at a depth of that
+// order. Its radius is then infinite, so every disagreement it is part of is ambiguous. The differential fuzzer
+// found both directions: a triangle with an edge through the eye, exactly seen edge-on and covering nothing, hit
+// by Embree at depth 9e-9; and one covered by raster at such depths where Embree saw nothing.
 
 // --- 7. Facing ----------------------------------------------------------------------------------------------
 // With back-face culling, raster keeps a triangle when det[x y w] of its three float clip-space vertices is > 0

@@ -76,6 +76,37 @@ std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double nea
     return polygon;
 }
 
+// Whether some point of the triangle may be kept by a renderer while lying within the float error of the eye,
+// where a screen position is unbounded (precision.h, section 6, "the eye"): the triangle (x, y, w), clipped to
+// the box |x| <= w + E_x + E_w, |y| <= w + E_y + E_w, near - E_w <= w <= E_w with E its vertices' largest
+// errors, keeps a point. Sutherland-Hodgman keeps degenerate (collinear) input exact, which matters here: a
+// triangle seen exactly edge-on through the eye is the case that needs this.
+bool passes_by_the_eye(const std::vector<ClipVertex>& triangle, double near) {
+    glm::dvec4 e(0.0);
+    for (const ClipVertex& v : triangle) e = glm::max(e, v.error);
+    if (!(near <= 2.0 * e.w)) return false;  // the band of w is empty: the near plane cuts the eye's surroundings
+    const std::array<glm::dvec4, 6> half_spaces = {
+        // (a, b, c, d): a x + b y + c w + d >= 0
+        glm::dvec4(0, 0, -1, e.w),          glm::dvec4(0, 0, 1, e.w - near),
+        glm::dvec4(-1, 0, 1, e.x + e.w),    glm::dvec4(1, 0, 1, e.x + e.w),
+        glm::dvec4(0, -1, 1, e.y + e.w),    glm::dvec4(0, 1, 1, e.y + e.w)};
+    std::vector<glm::dvec3> polygon;
+    for (const ClipVertex& v : triangle) polygon.emplace_back(v.clip.x, v.clip.y, v.clip.w);
+    for (const glm::dvec4& h : half_spaces) {
+        std::vector<glm::dvec3> out;
+        const size_t n = polygon.size();
+        for (size_t i = 0; i < n; ++i) {
+            const glm::dvec3 &a = polygon[i], &b = polygon[(i + 1) % n];
+            const double da = glm::dot(glm::dvec3(h), a) + h.w, db = glm::dot(glm::dvec3(h), b) + h.w;
+            if (da >= 0.0) out.push_back(a);
+            if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (da / (da - db)) * (b - a));
+        }
+        polygon = std::move(out);
+        if (polygon.empty()) return false;
+    }
+    return true;
+}
+
 glm::dmat4 absolute(const glm::dmat4& m) {
     glm::dmat4 a;
     for (int c = 0; c < 4; ++c)
@@ -119,7 +150,8 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene&
     for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
         const glm::dmat4 model(scene.meshes[mesh].model);
         const glm::dmat4 model_view = view * model;
-        const glm::dmat4 magnitude_chain = absolute(projection_exact_) * absolute(view) * absolute(model);
+        const glm::dmat4 view_magnitude_chain = absolute(view) * absolute(model);
+        const glm::dmat4 magnitude_chain = absolute(projection_exact_) * view_magnitude_chain;
         const auto& positions = scene.meshes[mesh].data.positions;
         const uint32_t first_triangle = geometry.mesh_first_triangle[mesh];
         const uint32_t first_vertex = geometry.mesh_first_vertex[mesh];
@@ -127,17 +159,21 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene&
         for (uint32_t local = 0; local < mesh_triangles; ++local) {
             const uint32_t id = first_triangle + local;
             std::vector<ClipVertex> polygon(3);
-            glm::dvec3 view_vertex[3];
+            glm::dvec3 view_vertex[3], oracle_error[3];
             for (int k = 0; k < 3; ++k) {
                 const glm::dvec4 p(glm::dvec3(positions[geometry.triangles[id].v[k] - first_vertex]), 1.0);
                 const glm::dvec4 in_view = model_view * p;
                 view_vertex[k] = glm::dvec3(in_view);
+                oracle_error[k] = float_gamma(kOracleTransformRoundings) * glm::dvec3(view_magnitude_chain * glm::abs(p));
                 polygon[k].clip = projection_exact_ * in_view;
                 polygon[k].magnitudes = magnitude_chain * glm::abs(p);
                 polygon[k].error = vertex_error(polygon[k].magnitudes);
                 polygon[k].outgoing = EdgeKind::triangle;
             }
-            triangles_[id] = {view_vertex[0], view_vertex[1] - view_vertex[0], view_vertex[2] - view_vertex[0]};
+            triangles_[id] = {view_vertex[0],
+                              view_vertex[1] - view_vertex[0],
+                              view_vertex[2] - view_vertex[0],
+                              {oracle_error[0], oracle_error[1], oracle_error[2]}};
             ReferencePolygon& out = polygons_[id];
             const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
             out.culled = scene.settings.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
@@ -148,6 +184,7 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene&
             }
             out.first = static_cast<uint32_t>(screen_.size());
             const std::vector<ClipVertex> original = polygon;
+            const bool unbounded = passes_by_the_eye(original, near_);
             const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_);
             out.count = static_cast<uint32_t>(clipped.size());
             out.radius = snap;
@@ -167,6 +204,7 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene&
                 out.relative_depth_error = std::max(out.relative_depth_error, relative_depth_error(v.clip.w, v.error.w));
                 out.reversed_z_error = std::max(out.reversed_z_error, reversed_z_error(v.clip, v.error));
             }
+            if (unbounded) out.radius = kInfinity;
         }
     }
 }
@@ -204,6 +242,13 @@ glm::dvec3 ReferenceGeometry::embree_barycentric_error(uint32_t id, const glm::d
     const ExactHit exact = hit(id, screen);
     if (!exact.valid) return glm::dvec3(std::numeric_limits<double>::infinity());
     return oracle::embree_barycentric_error(vertices, direction, exact.bary);
+}
+
+bool ReferenceGeometry::embree_may_cover(uint32_t id, const glm::dvec2& screen) const {
+    const ViewTriangle& tri = triangles_[id];
+    const glm::dvec3 vertices[3] = {tri.a, tri.a + tri.edge1, tri.a + tri.edge2};
+    const glm::dvec3 direction = view_ray_direction(projection_, ndc_from_screen(screen, width_, height_));
+    return oracle::embree_may_cover(vertices, tri.oracle_error, direction);
 }
 
 SquareRange ReferenceGeometry::range_around(uint32_t id, const glm::dvec2& screen, double half_side) const {

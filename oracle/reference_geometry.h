@@ -65,6 +65,9 @@ public:
     SquareRange range_around(uint32_t id, const glm::dvec2& screen, double half_side) const;
     // How far Embree's barycentrics for the ray through `screen` can be from exact (precision.h, section 5).
     glm::dvec3 embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const;
+    // Whether Embree's edge-by-edge test may report a hit on the triangle for the ray through `screen`
+    // (precision.h, section 5, "Embree's coverage").
+    bool embree_may_cover(uint32_t id, const glm::dvec2& screen) const;
 
     // Max-norm distance from `screen` to the polygon's boundary (every edge, whatever made it); infinite when the
     // polygon is empty.
@@ -75,6 +78,7 @@ public:
 private:
     struct ViewTriangle {
         glm::dvec3 a, edge1, edge2;  // vertex 0 and the edges to vertices 1 and 2, view space
+        glm::dvec3 oracle_error[3];  // how far the oracle's float view-space vertices can be from these
     };
     glm::mat4 projection_;          // as the vertex stage made it (camera rays are solved from it)
     glm::dmat4 projection_exact_;   // the same values in double

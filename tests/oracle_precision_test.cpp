@@ -152,5 +152,40 @@ TEST(Precision, rastersFacingDecisionIsTheSignOfTheNdcArea) {
     EXPECT_FALSE(faces_front(b, a, behind));
 }
 
+TEST(Precision, embreeMayCoverARayExactlyWhileEachEdgeIsWithinItsUncertainty) {
+    // A fat triangle at depth 1 with the ray along -z through (x, 0.25): the edge x = 0 (from v0 to v2) decides.
+    const glm::dvec3 v[3] = {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}};
+    const glm::dvec3 error[3] = {glm::dvec3(1e-7), glm::dvec3(1e-7), glm::dvec3(1e-7)};
+    auto ray = [](double x) { return glm::dvec3(x, 0.25, -1.0); };
+    EXPECT_TRUE(embree_may_cover(v, error, ray(0.25)));
+    // The edge x = 0 has U = 2 dot(v2 x v0, D) = -2 x: how far outside can the ray go? To the uncertainty plus slack.
+    // Just outside (x = -d), U = 2 d > 0 while V = -0.5 and W = -2 (d + 0.75) stay negative: Embree may cover the
+    // ray while U is within its uncertainty plus Embree's slack, 2u (1 + gamma_3) (|U| + |V| + |W| + the bounds).
+    const glm::dvec3 bound = embree_edge_uncertainty(v, error, ray(0.0));
+    ASSERT_GT(bound.x, 0.0);
+    ASSERT_LT(bound.x, 1e-5);
+    const double slack =
+        2.0 * kFloatUnitRoundoff * (1.0 + float_gamma(3)) * (0.5 + 1.5 + bound.x + bound.y + bound.z);
+    const double limit = 0.5 * (bound.x + slack);  // the largest d
+    EXPECT_TRUE(embree_may_cover(v, error, ray(-limit * (1 - 1e-2))));
+    EXPECT_FALSE(embree_may_cover(v, error, ray(-limit * (1 + 1e-2))));
+    EXPECT_FALSE(embree_may_cover(v, error, ray(-1e-3)));
+    // Either orientation: the same triangle wound the other way.
+    const glm::dvec3 reversed[3] = {v[0], v[2], v[1]};
+    EXPECT_TRUE(embree_may_cover(reversed, error, ray(0.25)));
+    EXPECT_FALSE(embree_may_cover(reversed, error, ray(-1e-3)));
+}
+
+TEST(Precision, embreeMayCoverANeedleAlongItsLineBeyondItsTip) {
+    // A needle 1e-6 wide along the line y = 0, z = -5, its tip at x = -1: the signs of its two long edges are
+    // uncertain for every ray that meets that line, also beyond the tip, and its short edge's sign is uncertain too.
+    const glm::dvec3 v[3] = {{-10, 0, -5}, {-10, 1e-6, -5}, {-1, 0, -5}};
+    const glm::dvec3 error[3] = {glm::dvec3(1e-6), glm::dvec3(1e-6), glm::dvec3(1e-6)};
+    EXPECT_TRUE(embree_may_cover(v, error, glm::dvec3(-0.8, 0, -5)));   // through the needle
+    EXPECT_TRUE(embree_may_cover(v, error, glm::dvec3(1, 0, -5)));      // 2 beyond the tip, on its line
+    EXPECT_FALSE(embree_may_cover(v, error, glm::dvec3(1, 0.5, -5)));   // off the line
+    EXPECT_FALSE(embree_may_cover(v, error, glm::dvec3(-5, 0.5, -5)));  // beside the needle
+}
+
 }  // namespace
 }  // namespace raster::oracle

@@ -104,6 +104,29 @@ TEST(ReferenceGeometry, aTriangleWithAVertexAtTheEyeHasNoBoundedRadius) {
     EXPECT_FALSE(std::isinf(reference_for(behind).polygon(0).radius));
 }
 
+TEST(ReferenceGeometry, aTriangleWithAnEdgeThroughTheEyeHasNoBoundedRadiusWhenTheNearPlaneIsThatClose) {
+    // The triangle lies in the plane x = -2 z of view space, through the eye and outside the 45-degree view, and
+    // its edge from view (10, 0, -5) to (-10, 0, 5) passes through the eye: exactly, it is seen edge-on and
+    // touches the view volume only at the eye, so clipping leaves nothing; in float its plane misses the eye by
+    // about its vertices' error, and then it covers any sample at a depth of that order. The differential fuzzer
+    // found Embree hitting such a triangle at depth 9e-9.
+    Camera camera = camera_at_origin(45, 1e-12f);
+    camera.eye = {2, 3, 4};
+    camera.target = {2, 3, -1};
+    const testing::Triangle through_eye = {{{12, 3, -1}, {-8, 3, 9}, {12, 4, -1}}};
+    const ReferenceGeometry reference = reference_for(scene_with_triangles({through_eye}, camera, 32, 32));
+    EXPECT_EQ(reference.polygon(0).count, 0u);
+    EXPECT_TRUE(std::isinf(reference.polygon(0).radius));
+    // Moved off the eye by far more than the float error, the triangle has its ordinary radius.
+    testing::Triangle beside = through_eye;
+    for (glm::vec3& v : beside) v.x += 0.01f;
+    EXPECT_FALSE(std::isinf(reference_for(scene_with_triangles({beside}, camera, 32, 32)).polygon(0).radius));
+    // With the near plane well beyond the error, both renderers cut the eye's surroundings away.
+    Camera far_near = camera;
+    far_near.near = 0.1f;
+    EXPECT_FALSE(std::isinf(reference_for(scene_with_triangles({through_eye}, far_near, 32, 32)).polygon(0).radius));
+}
+
 TEST(ReferenceGeometry, squareRangesHoldTheValuesInsideTheSquare) {
     const Scene scene = scene_with_triangles({{{{-1, -1, -2}, {1, -1, -3}, {0, 1, -6}}}}, camera_at_origin(), 100, 100);
     const ReferenceGeometry reference = reference_for(scene);
