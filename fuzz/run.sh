@@ -6,7 +6,11 @@
 #                                        A crash, hang (over 1 s) or OOM (over 2 GiB) is minimised
 #                                        (-minimize_crash=1) into corpus/regressions/TARGET/, which ctest replays.
 #   fuzz/run.sh --ci [SECONDS] [JOBS]    CI: every target for SECONDS (default 60), JOBS at a time (default 2), the
-#                                        corpus left untouched; exits 1 if any target failed, naming the reproducer.
+#                                        corpus left untouched; exits 1 if any target failed, naming the reproducer
+#                                        and printing it in base64 (the CI machine's files do not outlive it).
+#
+# RASTER_FUZZ_SEED sets libFuzzer's -seed. CI mode defaults it to 1, so that a CI run can be repeated here input
+# for input (up to the run count the machine reached in the time); local runs default to a random seed.
 #
 # Each target's flags come from fuzz/TARGET.options (the same file OSS-Fuzz reads). Set RASTER_FUZZ_BUILD to use
 # another build directory; it must be configured like the preset (libFuzzer engine).
@@ -20,6 +24,7 @@ if [[ ${1:-} == --ci ]]; then
   target=all
   seconds=${2:-60}
   jobs=${3:-2}
+  RASTER_FUZZ_SEED=${RASTER_FUZZ_SEED:-1}
 else
   target=${1:-all}
   seconds=${2:-60}
@@ -57,6 +62,7 @@ fuzz_target() {
   local corpora=("$work/new" "$root/corpus/fuzz/$name")
   [[ -d $root/corpus/regressions/$name ]] && corpora+=("$root/corpus/regressions/$name")
   mapfile -t flags < <(options_of "$name")
+  [[ -n ${RASTER_FUZZ_SEED:-} ]] && flags+=("-seed=$RASTER_FUZZ_SEED")
   "$binary" "${flags[@]}" -max_total_time="$seconds" -print_final_stats=1 -artifact_prefix="$artifacts/" \
     "${corpora[@]}" >"$log" 2>&1 || status=$?
 
@@ -65,7 +71,7 @@ fuzz_target() {
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1 || true)
   if ((status == 0)); then
-    echo "fuzz: $name: ${runs:-?} runs in $seconds s (${rate:-?}/s), $cov"
+    echo "fuzz: $name: ${runs:-?} runs in $seconds s (${rate:-?}/s), $cov${RASTER_FUZZ_SEED:+, seed $RASTER_FUZZ_SEED}"
     if ((!ci)); then
       local before after
       before=$(find "$root/corpus/fuzz/$name" -type f | wc -l)
@@ -79,13 +85,15 @@ fuzz_target() {
 
   local found
   found=$(find "$artifacts" -type f | head -1)
-  echo "fuzz: $name: FAILED (exit $status) after ${runs:-?} runs; log: $log" >&2
-  grep -E 'ERROR|SUMMARY|check failed|^ {2,}[^ #]' "$log" | head -20 >&2 || true
+  echo "fuzz: $name: FAILED (exit $status) after ${runs:-?} runs${RASTER_FUZZ_SEED:+ (seed $RASTER_FUZZ_SEED)}; log: $log" >&2
+  grep -E 'ERROR|SUMMARY|check failed|^ {2,}[^ #]' "$log" | head -60 >&2 || true
   if [[ -z $found ]]; then
     echo "fuzz: $name: no reproducer was written" >&2
   elif ((ci)); then
     echo "fuzz: $name: reproducer: $found" >&2
     echo "fuzz: $name: replay it with: $binary $found" >&2
+    echo "fuzz: $name: the reproducer in base64 (recreate it with: base64 -d > FILE):" >&2
+    base64 "$found" >&2
   else
     local kept=$root/corpus/regressions/$name/$(basename "$found")
     mkdir -p "$(dirname "$kept")"
