@@ -69,7 +69,8 @@ AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint3
     // Both renderers round: twice the per-renderer rounding; and Embree's own evaluation error.
     tolerance.bary = (range.max_bary - range.min_bary) + glm::dvec3(2.0 * bary_rounding) +
                      reference.embree_barycentric_error(id, screen);
-    tolerance.view_depth = (range.max_view_depth - range.min_view_depth) + 2.0 * depth_rounding * range.max_view_depth;
+    tolerance.view_depth = (range.max_view_depth - range.min_view_depth) + 2.0 * depth_rounding * range.max_view_depth +
+                           reference.embree_view_depth_error(id, screen);
     return tolerance;
 }
 
@@ -95,7 +96,9 @@ bool depth_tie(const ReferenceGeometry& reference, uint32_t a, uint32_t b, const
     const SquareRange ra = reference.range_around(a, screen, reference.polygon(a).radius);
     const SquareRange rb = reference.range_around(b, screen, reference.polygon(b).radius);
     if (!ra.bounded || !rb.bounded) return true;
-    const double ea = reference.polygon(a).reversed_z_error, eb = reference.polygon(b).reversed_z_error;
+    // Each triangle's reversed-Z error, and Embree's own at this sample (its choice rests on its t).
+    const double ea = reference.polygon(a).reversed_z_error + reference.embree_reversed_z_error(a, screen);
+    const double eb = reference.polygon(b).reversed_z_error + reference.embree_reversed_z_error(b, screen);
     return ra.min_reversed_z - ea <= rb.max_reversed_z + eb && rb.min_reversed_z - eb <= ra.max_reversed_z + ea;
 }
 

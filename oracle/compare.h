@@ -43,7 +43,8 @@ struct SampleEntry {
 SampleEntry sample_entry(const VisibilityBuffer& buffer, size_t index);
 
 // How far raster's and the oracle's barycentrics and view depth may be apart for triangle `id` at `screen`: the
-// spread of the exact values over the square of half-side `radius`, plus both renderers' float rounding.
+// spread of the exact values over the square of half-side `radius`, plus both renderers' float rounding, plus
+// Embree's own evaluation error of its barycentrics and depth at the sample.
 // Unbounded (infinite) where the ray grazes the triangle's plane within the square.
 struct AgreementTolerance {
     glm::dvec3 bary{0.0};

@@ -34,6 +34,12 @@ double cross_dot_magnitude(const glm::dvec3& a, const glm::dvec3& b, const glm::
     return (x.y * y.z + x.z * y.y) * z.x + (x.z * y.x + x.x * y.z) * z.y + (x.x * y.y + x.y * y.x) * z.z;
 }
 
+// |a| x| |b|: the componentwise magnitude of cross(a, b), its two products added.
+glm::dvec3 cross_magnitude(const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 x = glm::abs(a), y = glm::abs(b);
+    return {x.y * y.z + x.z * y.y, x.z * y.x + x.x * y.z, x.x * y.y + x.y * y.x};
+}
+
 }  // namespace
 
 glm::dvec3 embree_barycentric_error(const glm::dvec3 v[3], const glm::dvec3& direction, const glm::dvec3& bary) {
@@ -91,6 +97,42 @@ bool embree_may_cover(const glm::dvec3 v[3], const glm::dvec3 error[3], const gl
     const bool all_positive = values.x >= -allowance.x && values.y >= -allowance.y && values.z >= -allowance.z;
     const bool all_negative = values.x <= allowance.x && values.y <= allowance.y && values.z <= allowance.z;
     return all_positive || all_negative;
+}
+
+double embree_view_depth_error(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction,
+                               double view_depth) {
+    const double u = kFloatUnitRoundoff;
+    // Ng is the cross product of two edges that Embree forms from the oracle's vertices; any two give the same
+    // exact normal (up to sign, which den and T share), so the bound takes the worst pair. An edge is off by the
+    // vertex errors of its ends plus the subtraction's rounding.
+    auto edge = [&](int from, int to, glm::dvec3& exact, glm::dvec3& off) {
+        exact = v[to] - v[from];
+        const glm::dvec3 moved = error[from] + error[to];
+        off = moved + u * (glm::abs(exact) + moved);
+    };
+    const glm::dvec3 normal = glm::cross(v[1] - v[0], v[2] - v[0]);
+    glm::dvec3 normal_error(0.0);
+    for (int k = 0; k < 3; ++k) {
+        glm::dvec3 a, a_off, b, b_off;
+        edge(k, (k + 1) % 3, a, a_off);
+        edge((k + 1) % 3, (k + 2) % 3, b, b_off);
+        const glm::dvec3 a_bound = glm::abs(a) + a_off, b_bound = glm::abs(b) + b_off;
+        normal_error = glm::max(normal_error, cross_magnitude(a_off, b_bound) + cross_magnitude(a, b_off) +
+                                                  float_gamma(kEmbreeCrossRoundings) * cross_magnitude(a_bound, b_bound));
+    }
+    const glm::dvec3 normal_bound = glm::abs(normal) + normal_error;
+    const glm::dvec3 d = glm::abs(direction);
+    // den = 2 dot(Ng, D) and T = 2 dot(v0, Ng); D itself is rounded to float (u |D|).
+    const double den = 2.0 * glm::dot(normal, direction);
+    const double den_error = 2.0 * (glm::dot(normal_error, d) + u * glm::dot(normal_bound, d) +
+                                    float_gamma(kEmbreeDotRoundings) * (1.0 + u) * glm::dot(normal_bound, d));
+    const glm::dvec3 v0_bound = glm::abs(v[0]) + error[0];
+    const double t_numerator_error = 2.0 * (glm::dot(error[0], normal_bound) + glm::dot(glm::abs(v[0]), normal_error) +
+                                            float_gamma(kEmbreeDotRoundings) * glm::dot(v0_bound, normal_bound));
+    if (!(den_error < std::fabs(den))) return std::numeric_limits<double>::infinity();
+    const double t = std::fabs(view_depth);
+    const double quotient_error = (t_numerator_error + t * den_error) / (std::fabs(den) - den_error);
+    return quotient_error + float_gamma(kEmbreeRatioRoundings) * (t + quotient_error);
 }
 
 double facing_uncertainty(const glm::dvec4 clip[3], const glm::dvec4 error[3]) {

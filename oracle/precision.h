@@ -101,7 +101,8 @@ double view_depth_rounding(double relative_depth_error);
 inline constexpr int kReversedZRoundings = 4;
 double reversed_z_error(const glm::dvec4& clip, const glm::dvec4& error);
 // Two surfaces TIE at a sample when their reversed-Z intervals over the r-square (corner extremes, widened by each
-// triangle's reversed-Z error) overlap: then either renderer may legitimately show either.
+// triangle's reversed-Z error and by Embree's view-depth error at the sample mapped to d, "Embree's view depth"
+// below) overlap: then either renderer may legitimately show either.
 
 // EMBREE'S BARYCENTRICS. The backward-error view of Embree's test (section 2) holds edge by edge, not for the
 // barycentrics: Embree (robust mode: the Pluecker test) computes, with the ray origin at the eye and vertices
@@ -122,6 +123,21 @@ inline constexpr int kOracleBarycentricRoundings = 2;
 // The bound per component (1 - u - v, u, v), for view-space vertices `v`, ray direction `direction` and exact
 // barycentrics `bary` at the sample; infinite when E_S >= |S| (Embree's answer is then unconstrained).
 glm::dvec3 embree_barycentric_error(const glm::dvec3 v[3], const glm::dvec3& direction, const glm::dvec3& bary);
+
+// EMBREE'S VIEW DEPTH. Embree computes t from the oracle's float vertices as T / den with Ng the cross product of
+// two edges, den = 2 dot(Ng, D) and T = 2 dot(v0, Ng) (the eye at the origin; the bound takes the worst pair of
+// edges, so it does not depend on which two Embree takes). With the exact edges a, b, their
+// float versions are off by the vertex errors of their ends plus one rounding; the cross product's change is
+// |da| x| |b'| + |a| x| |db| and its own rounding gamma_2 |a'| x| |b'| (x|: products added); den and T add the
+// float direction (u) and their dot products (gamma_3); then
+//     |t' - t| <= (E_T + |t| E_den) / (|den| - E_den) + gamma_7 (|t| + that)
+// (gamma_7: Embree's reciprocal, refined once, times T). For a triangle seen almost edge-on, den (twice its
+// area seen along D) is small and the error grows as 1 / den: the differential fuzzer found Embree's depth 0.3%
+// off on a sliver. Infinite when E_den >= |den|.
+inline constexpr int kEmbreeCrossRoundings = 2;
+inline constexpr int kEmbreeDotRoundings = 3;
+double embree_view_depth_error(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction,
+                               double view_depth);
 
 // EMBREE'S COVERAGE. Embree decides a ray's hit from the signs of U, V and W: all >= -eps, or all <= eps, with
 // its own slack eps = ulp |U + V + W| (ulp = 2u). Each sign is exact for vertices moved by a little (section 2),

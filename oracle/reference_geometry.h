@@ -65,6 +65,11 @@ public:
     SquareRange range_around(uint32_t id, const glm::dvec2& screen, double half_side) const;
     // How far Embree's barycentrics for the ray through `screen` can be from exact (precision.h, section 5).
     glm::dvec3 embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const;
+    // How far Embree's view depth for the ray through `screen` can be from exact (precision.h, section 5); infinite
+    // where the ray misses the triangle's plane in front of the eye.
+    double embree_view_depth_error(uint32_t id, const glm::dvec2& screen) const;
+    // The same in reversed-Z units (d = z/w = -P22 + P32 / t), for the oracle's choice between two surfaces.
+    double embree_reversed_z_error(uint32_t id, const glm::dvec2& screen) const;
     // Whether Embree's edge-by-edge test may report a hit on the triangle for the ray through `screen`
     // (precision.h, section 5, "Embree's coverage").
     bool embree_may_cover(uint32_t id, const glm::dvec2& screen) const;

@@ -152,6 +152,37 @@ TEST(Precision, rastersFacingDecisionIsTheSignOfTheNdcArea) {
     EXPECT_FALSE(faces_front(b, a, behind));
 }
 
+TEST(Precision, embreesViewDepthErrorIsAFewRoundingsFaceOnAndGrowsAsTheTriangleTurnsEdgeOn) {
+    const glm::dvec3 no_error[3] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
+    const glm::dvec3 direction(0, 0, -1);
+    // The plane z = -2 - k y through the hit at depth 2, over the same footprint in x and y: den (twice the area
+    // seen along the ray) stays the same while the triangle's extent, and so the rounding of T and den, grows.
+    auto triangle_at = [](double k, glm::dvec3 (&v)[3]) {
+        v[0] = {-1, -1, -2 + k};
+        v[1] = {1, -1, -2 + k};
+        v[2] = {0, 1, -2 - k};
+    };
+    glm::dvec3 face_on[3];
+    triangle_at(0.0, face_on);
+    const double face_on_error = embree_view_depth_error(face_on, no_error, direction, 2.0);
+    EXPECT_GT(face_on_error, 0.0);
+    EXPECT_LT(face_on_error, 2.0 * float_gamma(40));  // a few dozen float roundings of t
+    double previous = face_on_error;
+    for (double k : {10.0, 100.0, 1000.0}) {
+        glm::dvec3 turned[3];
+        triangle_at(k, turned);
+        const double error = embree_view_depth_error(turned, no_error, direction, 2.0);
+        EXPECT_GT(error, 5.0 * previous) << k;
+        previous = error;
+    }
+    // The vertices' own errors count: 1e-6 of them moves the plane, and the bound, further.
+    const glm::dvec3 off[3] = {glm::dvec3(1e-6), glm::dvec3(1e-6), glm::dvec3(1e-6)};
+    EXPECT_GT(embree_view_depth_error(face_on, off, direction, 2.0), 1e-6);
+    // Seen exactly edge-on, den is 0: unbounded.
+    const glm::dvec3 edge_on[3] = {{-1, 0, -2}, {1, 0, -2}, {0, 0, -3}};
+    EXPECT_TRUE(std::isinf(embree_view_depth_error(edge_on, no_error, direction, 2.0)));
+}
+
 TEST(Precision, embreeMayCoverARayExactlyWhileEachEdgeIsWithinItsUncertainty) {
     // A fat triangle at depth 1 with the ray along -z through (x, 0.25): the edge x = 0 (from v0 to v2) decides.
     const glm::dvec3 v[3] = {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}};
