@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -35,6 +37,31 @@ size_t covered(const VisibilityBuffer& buffer) {
     size_t n = 0;
     for (uint32_t id : buffer.triangle) n += id != kNoTriangle;
     return n;
+}
+
+// One sample where the oracle shows triangle 0 of a one-triangle scene: its index in the buffer, its screen
+// position, and where it is, for messages.
+struct OracleHit {
+    size_t at;
+    glm::dvec2 screen;
+    std::string where;
+};
+
+// Every sample where the oracle shows triangle 0 of `scene`, with the scene's exact reference geometry.
+std::vector<OracleHit> oracle_hits(const Scene& scene, const VisibilityBuffer& buffer) {
+    const int fixed_bits = fixed_bits_for(scene.settings.snap_bits);
+    const FixedSampleOffsets offsets =
+        fixed_sample_offsets(sample_offsets(scene.settings.samples, scene.settings.pattern), fixed_bits);
+    std::vector<OracleHit> hits;
+    for (int py = 0; py < buffer.height; ++py)
+        for (int px = 0; px < buffer.width; ++px)
+            for (int s = 0; s < buffer.samples; ++s) {
+                const size_t at = buffer.index(px, py, s);
+                if (buffer.triangle[at] != 0) continue;
+                hits.push_back({at, sample_screen_position(px, py, s, offsets, fixed_bits),
+                                std::to_string(px) + "," + std::to_string(py) + " sample " + std::to_string(s)});
+            }
+    return hits;
 }
 
 TEST(Oracle, hitsCarryExactBarycentricsAndViewDepthAtRastersSamplePositions) {
@@ -160,26 +187,18 @@ TEST(Oracle, embreesBarycentricsOnANeedleStayWithinTheirDerivedBound) {
     const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
     const ReferenceGeometry reference(scene, geometry);
     const VisibilityBuffer buffer = oracle_buffer(scene);
-    const int fixed_bits = fixed_bits_for(scene.settings.snap_bits);
-    const FixedSampleOffsets offsets =
-        fixed_sample_offsets(sample_offsets(scene.settings.samples, scene.settings.pattern), fixed_bits);
-    int hits = 0, beyond_roundings = 0;
-    for (int py = 0; py < buffer.height; ++py)
-        for (int px = 0; px < buffer.width; ++px)
-            for (int s = 0; s < buffer.samples; ++s) {
-                const size_t at = buffer.index(px, py, s);
-                if (buffer.triangle[at] != 0) continue;
-                ++hits;
-                const glm::dvec2 screen = sample_screen_position(px, py, s, offsets, fixed_bits);
-                const glm::dvec3 exact = reference.hit(0, screen).bary;
-                const glm::dvec3 bound = reference.embree_barycentric_error(0, screen);
-                const glm::dvec3 error = glm::abs(glm::dvec3(buffer.bary[at]) - exact);
-                EXPECT_LE(error.x, bound.x) << px << "," << py << " sample " << s;
-                EXPECT_LE(error.y, bound.y) << px << "," << py << " sample " << s;
-                EXPECT_LE(error.z, bound.z) << px << "," << py << " sample " << s;
-                beyond_roundings += std::max({error.x, error.y, error.z}) > 2.0 * barycentric_rounding(0.0);
-            }
-    EXPECT_GT(hits, 0);
+    const std::vector<OracleHit> hits = oracle_hits(scene, buffer);
+    int beyond_roundings = 0;
+    for (const OracleHit& hit : hits) {
+        const glm::dvec3 exact = reference.hit(0, hit.screen).bary;
+        const glm::dvec3 bound = reference.embree_barycentric_error(0, hit.screen);
+        const glm::dvec3 error = glm::abs(glm::dvec3(buffer.bary[hit.at]) - exact);
+        EXPECT_LE(error.x, bound.x) << hit.where;
+        EXPECT_LE(error.y, bound.y) << hit.where;
+        EXPECT_LE(error.z, bound.z) << hit.where;
+        beyond_roundings += std::max({error.x, error.y, error.z}) > 2.0 * barycentric_rounding(0.0);
+    }
+    EXPECT_FALSE(hits.empty());
     EXPECT_GT(beyond_roundings, 0);
 }
 
@@ -197,23 +216,15 @@ TEST(Oracle, embreesViewDepthOnASliverStaysWithinItsDerivedBound) {
     const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
     const ReferenceGeometry reference(scene, geometry);
     const VisibilityBuffer buffer = oracle_buffer(scene);
-    const int fixed_bits = fixed_bits_for(scene.settings.snap_bits);
-    const FixedSampleOffsets offsets =
-        fixed_sample_offsets(sample_offsets(scene.settings.samples, scene.settings.pattern), fixed_bits);
-    int hits = 0, beyond_roundings = 0;
-    for (int py = 0; py < buffer.height; ++py)
-        for (int px = 0; px < buffer.width; ++px)
-            for (int s = 0; s < buffer.samples; ++s) {
-                const size_t at = buffer.index(px, py, s);
-                if (buffer.triangle[at] != 0) continue;
-                ++hits;
-                const glm::dvec2 screen = sample_screen_position(px, py, s, offsets, fixed_bits);
-                const double exact = reference.hit(0, screen).view_depth;
-                const double error = std::fabs(double(buffer.view_depth[at]) - exact);
-                EXPECT_LE(error, reference.embree_view_depth_error(0, screen)) << px << "," << py << " sample " << s;
-                beyond_roundings += error > 2.0 * view_depth_rounding(reference.polygon(0).relative_depth_error) * exact;
-            }
-    EXPECT_GT(hits, 0);
+    const std::vector<OracleHit> hits = oracle_hits(scene, buffer);
+    int beyond_roundings = 0;
+    for (const OracleHit& hit : hits) {
+        const double exact = reference.hit(0, hit.screen).view_depth;
+        const double error = std::fabs(double(buffer.view_depth[hit.at]) - exact);
+        EXPECT_LE(error, reference.embree_view_depth_error(0, hit.screen)) << hit.where;
+        beyond_roundings += error > 2.0 * view_depth_rounding(reference.polygon(0).relative_depth_error) * exact;
+    }
+    EXPECT_FALSE(hits.empty());
     EXPECT_GT(beyond_roundings, 0);
 }
 
@@ -243,21 +254,14 @@ TEST(Oracle, embreesCoverageStaysWhereItsEdgeByEdgeTestAllows) {
         const TransformedScene geometry = run_vertex_stage(*scene, vertex_stage_needs(scene->settings.shading));
         const ReferenceGeometry reference(*scene, geometry);
         const VisibilityBuffer buffer = oracle_buffer(*scene);
-        const int fixed_bits = fixed_bits_for(scene->settings.snap_bits);
-        const FixedSampleOffsets offsets =
-            fixed_sample_offsets(sample_offsets(scene->settings.samples, scene->settings.pattern), fixed_bits);
-        int hits = 0, beyond_band = 0;
-        for (int py = 0; py < buffer.height; ++py)
-            for (int px = 0; px < buffer.width; ++px)
-                for (int s = 0; s < buffer.samples; ++s) {
-                    if (buffer.triangle[buffer.index(px, py, s)] != 0) continue;
-                    ++hits;
-                    const glm::dvec2 screen = sample_screen_position(px, py, s, offsets, fixed_bits);
-                    EXPECT_TRUE(reference.embree_may_cover(0, screen)) << px << "," << py << " sample " << s;
-                    beyond_band += !reference.contains(0, screen) &&
-                                   !(reference.boundary_distance(0, screen) <= reference.polygon(0).radius);
-                }
-        EXPECT_GT(hits, 0) << scene->camera.near;
+        const std::vector<OracleHit> hits = oracle_hits(*scene, buffer);
+        int beyond_band = 0;
+        for (const OracleHit& hit : hits) {
+            EXPECT_TRUE(reference.embree_may_cover(0, hit.screen)) << hit.where;
+            beyond_band += !reference.contains(0, hit.screen) &&
+                           !(reference.boundary_distance(0, hit.screen) <= reference.polygon(0).radius);
+        }
+        EXPECT_FALSE(hits.empty()) << scene->camera.near;
         EXPECT_GT(beyond_band, 0) << scene->camera.near;
     }
 }
