@@ -235,37 +235,41 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
     return hit;
 }
 
-glm::dvec3 ReferenceGeometry::embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const {
+ReferenceGeometry::EmbreeRay ReferenceGeometry::embree_ray(uint32_t id, const glm::dvec2& screen) const {
     const ViewTriangle& tri = triangles_[id];
-    const glm::dvec3 vertices[3] = {tri.a, tri.a + tri.edge1, tri.a + tri.edge2};
-    const glm::dvec3 direction = view_ray_direction(projection_, ndc_from_screen(screen, width_, height_));
+    return {{tri.a, tri.a + tri.edge1, tri.a + tri.edge2},
+            view_ray_direction(projection_, ndc_from_screen(screen, width_, height_)),
+            tri.oracle_error};
+}
+
+glm::dvec3 ReferenceGeometry::embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const {
     const ExactHit exact = hit(id, screen);
     if (!exact.valid) return glm::dvec3(std::numeric_limits<double>::infinity());
-    return oracle::embree_barycentric_error(vertices, direction, exact.bary);
+    const EmbreeRay ray = embree_ray(id, screen);
+    return oracle::embree_barycentric_error(ray.vertices, ray.direction, exact.bary);
 }
 
 double ReferenceGeometry::embree_view_depth_error(uint32_t id, const glm::dvec2& screen) const {
-    const ViewTriangle& tri = triangles_[id];
-    const glm::dvec3 vertices[3] = {tri.a, tri.a + tri.edge1, tri.a + tri.edge2};
-    const glm::dvec3 direction = view_ray_direction(projection_, ndc_from_screen(screen, width_, height_));
-    const ExactHit exact = hit(id, screen);
+    return embree_view_depth_error(id, screen, hit(id, screen));
+}
+
+double ReferenceGeometry::embree_view_depth_error(uint32_t id, const glm::dvec2& screen, const ExactHit& exact) const {
     if (!exact.valid) return std::numeric_limits<double>::infinity();
-    return oracle::embree_view_depth_error(vertices, tri.oracle_error, direction, exact.view_depth);
+    const EmbreeRay ray = embree_ray(id, screen);
+    return oracle::embree_view_depth_error(ray.vertices, ray.vertex_error, ray.direction, exact.view_depth);
 }
 
 double ReferenceGeometry::embree_reversed_z_error(uint32_t id, const glm::dvec2& screen) const {
     const ExactHit exact = hit(id, screen);
-    const double error = embree_view_depth_error(id, screen);
-    if (!exact.valid || !(error < exact.view_depth)) return std::numeric_limits<double>::infinity();
+    const double error = embree_view_depth_error(id, screen, exact);
+    if (!(error < exact.view_depth)) return std::numeric_limits<double>::infinity();  // also: no valid hit
     // |P32 / t' - P32 / t| for |t' - t| <= error.
     return std::fabs(projection_exact_[3][2]) * error / (exact.view_depth * (exact.view_depth - error));
 }
 
 bool ReferenceGeometry::embree_may_cover(uint32_t id, const glm::dvec2& screen) const {
-    const ViewTriangle& tri = triangles_[id];
-    const glm::dvec3 vertices[3] = {tri.a, tri.a + tri.edge1, tri.a + tri.edge2};
-    const glm::dvec3 direction = view_ray_direction(projection_, ndc_from_screen(screen, width_, height_));
-    return oracle::embree_may_cover(vertices, tri.oracle_error, direction);
+    const EmbreeRay ray = embree_ray(id, screen);
+    return oracle::embree_may_cover(ray.vertices, ray.vertex_error, ray.direction);
 }
 
 SquareRange ReferenceGeometry::range_around(uint32_t id, const glm::dvec2& screen, double half_side) const {

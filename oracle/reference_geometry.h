@@ -85,6 +85,16 @@ private:
         glm::dvec3 a, edge1, edge2;  // vertex 0 and the edges to vertices 1 and 2, view space
         glm::dvec3 oracle_error[3];  // how far the oracle's float view-space vertices can be from these
     };
+    // What Embree's evaluation bounds need for one triangle and one sample's ray.
+    struct EmbreeRay {
+        glm::dvec3 vertices[3];            // view space, exact
+        glm::dvec3 direction;              // the camera ray through the sample (z = -1)
+        const glm::dvec3* vertex_error;    // the oracle's float vertex errors, 3 of them
+    };
+    EmbreeRay embree_ray(uint32_t id, const glm::dvec2& screen) const;
+    // embree_view_depth_error with the exact hit at `screen` already found.
+    double embree_view_depth_error(uint32_t id, const glm::dvec2& screen, const ExactHit& exact) const;
+
     glm::mat4 projection_;          // as the vertex stage made it (camera rays are solved from it)
     glm::dmat4 projection_exact_;   // the same values in double
     int width_ = 0, height_ = 0;
