@@ -22,6 +22,7 @@ namespace raster::oracle {
 namespace {
 
 using testing::camera_at_origin;
+using testing::reference_for;
 using testing::scene_with_triangles;
 
 const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
@@ -67,8 +68,7 @@ std::vector<OracleHit> oracle_hits(const Scene& scene, const VisibilityBuffer& b
 TEST(Oracle, hitsCarryExactBarycentricsAndViewDepthAtRastersSamplePositions) {
     Scene scene = load_scene(kCorpus + "perspective_quad.yaml");
     const VisibilityBuffer buffer = oracle_buffer(scene);
-    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
-    const ReferenceGeometry reference(scene, geometry);
+    const ReferenceGeometry reference = reference_for(scene);
     const int fixed_bits = fixed_bits_for(scene.settings.snap_bits);
     const FixedSampleOffsets offsets =
         fixed_sample_offsets(sample_offsets(scene.settings.samples, scene.settings.pattern), fixed_bits);
@@ -184,8 +184,7 @@ TEST(Oracle, embreesBarycentricsOnANeedleStayWithinTheirDerivedBound) {
     scene.camera.near = 0x1.0624dep-10f;
     scene.camera.far = 0x1.dcd65p+29f;
     scene.settings.snap_bits = 12;
-    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
-    const ReferenceGeometry reference(scene, geometry);
+    const ReferenceGeometry reference = reference_for(scene);
     const VisibilityBuffer buffer = oracle_buffer(scene);
     const std::vector<OracleHit> hits = oracle_hits(scene, buffer);
     int beyond_roundings = 0;
@@ -213,8 +212,7 @@ TEST(Oracle, embreesViewDepthOnASliverStaysWithinItsDerivedBound) {
     scene.camera.target = glm::vec3(c);
     scene.settings.pattern = SamplePattern::grid;
     scene.settings.snap_bits = 4;
-    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
-    const ReferenceGeometry reference(scene, geometry);
+    const ReferenceGeometry reference = reference_for(scene);
     const VisibilityBuffer buffer = oracle_buffer(scene);
     const std::vector<OracleHit> hits = oracle_hits(scene, buffer);
     int beyond_roundings = 0;
@@ -251,8 +249,7 @@ TEST(Oracle, embreesCoverageStaysWhereItsEdgeByEdgeTestAllows) {
     through_eye.settings.pattern = SamplePattern::grid;
     through_eye.settings.snap_bits = 1;
     for (const Scene* scene : {&needle, &through_eye}) {
-        const TransformedScene geometry = run_vertex_stage(*scene, vertex_stage_needs(scene->settings.shading));
-        const ReferenceGeometry reference(*scene, geometry);
+        const ReferenceGeometry reference = reference_for(*scene);
         const VisibilityBuffer buffer = oracle_buffer(*scene);
         const std::vector<OracleHit> hits = oracle_hits(*scene, buffer);
         int beyond_band = 0;
