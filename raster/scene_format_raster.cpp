@@ -128,23 +128,17 @@ void read_render(const YAML::Node& node, const YamlReader& reader, RenderSetting
         settings.snap_bits = reader.integer(v, "snap_bits", kMinSnapBits, kMaxSnapBits);
     if (YAML::Node v = reader.optional(node, "ambient"); v.IsDefined())
         settings.ambient_light = read_color(v, reader, "render ambient");
+    // A precision mode: an optional key naming one of the values its parse function knows.
+    auto read_mode = [&](const char* key, auto parse, auto names, auto& out) {
+        if (YAML::Node v = reader.optional(node, key); v.IsDefined()) {
+            if (!parse(reader.string(v, key), out)) reader.fail(v, std::string(key) + " must be one of " + names());
+        }
+    };
     PrecisionModes& modes = settings.modes;
-    if (YAML::Node v = reader.optional(node, "edges"); v.IsDefined()) {
-        if (!parse_edge_arithmetic(reader.string(v, "edges"), modes.edges))
-            reader.fail(v, "edges must be one of " + edge_arithmetic_names());
-    }
-    if (YAML::Node v = reader.optional(node, "interpolation"); v.IsDefined()) {
-        if (!parse_interpolation(reader.string(v, "interpolation"), modes.interpolation))
-            reader.fail(v, "interpolation must be one of " + interpolation_names());
-    }
-    if (YAML::Node v = reader.optional(node, "depth"); v.IsDefined()) {
-        if (!parse_depth_format(reader.string(v, "depth"), modes.depth))
-            reader.fail(v, "depth must be one of " + depth_format_names());
-    }
-    if (YAML::Node v = reader.optional(node, "clipping"); v.IsDefined()) {
-        if (!parse_clipping(reader.string(v, "clipping"), modes.clipping))
-            reader.fail(v, "clipping must be one of " + clipping_names());
-    }
+    read_mode("edges", parse_edge_arithmetic, edge_arithmetic_names, modes.edges);
+    read_mode("interpolation", parse_interpolation, interpolation_names, modes.interpolation);
+    read_mode("depth", parse_depth_format, depth_format_names, modes.depth);
+    read_mode("clipping", parse_clipping, clipping_names, modes.clipping);
     if (YAML::Node v = reader.optional(node, "hierarchical_z"); v.IsDefined())
         modes.hierarchical_z = reader.boolean(v, "hierarchical_z");
 }
