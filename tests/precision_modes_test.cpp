@@ -122,6 +122,15 @@ TEST(Interpolation, affineIsLinearInScreenSpaceAndPerspectiveIsNot) {
 
 // Two parallel walls 0.05 apart at 500 units with near 0.01, the farther drawn first: the nearer must replace it.
 // Their z/w differ by ~2e-9, under float's spacing near 1 (6e-8) and a 24-bit level; reversed-Z d ~ 2e-5 keeps it.
+// A square wall of half-side `half` at view depth -z, facing the camera at the origin: two triangles.
+SceneMesh square_wall(float half, float z) {
+    SceneMesh mesh;
+    mesh.source = "inline";
+    mesh.data.positions = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
+    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    return mesh;
+}
+
 Scene two_walls(DepthFormat depth) {
     Scene scene;
     scene.path = "two walls";
@@ -132,13 +141,7 @@ Scene two_walls(DepthFormat depth) {
     scene.camera.target = {0.0f, 0.0f, -1.0f};
     scene.camera.near = 0.01f;
     scene.camera.far = 1000.0f;
-    for (float z : {-500.05f, -500.0f}) {
-        SceneMesh mesh;
-        mesh.source = "inline";
-        mesh.data.positions = {{-400, -400, z}, {400, -400, z}, {400, 400, z}, {-400, 400, z}};
-        mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-        scene.meshes.push_back(mesh);
-    }
+    for (float z : {-500.05f, -500.0f}) scene.meshes.push_back(square_wall(400, z));
     return scene;
 }
 
@@ -168,9 +171,9 @@ TEST(Clipping, theGuardBandFactorKeepsEdgeFunctionsWithin64Bits) {
 }
 
 TEST(Clipping, aGuardBandLeavesTrianglesThatReachOffScreenUnclipped) {
-    Scene scene = two_walls(DepthFormat::reversed_z);  // walls larger than the view
-    scene.meshes.pop_back();
-    scene.meshes[0].data.positions = {{-600, -600, -500}, {600, -600, -500}, {600, 600, -500}, {-600, 600, -500}};
+    Scene scene = two_walls(DepthFormat::reversed_z);
+    // One wall larger than the view, so its triangles reach off screen.
+    scene.meshes = {square_wall(600, -500)};
     const RenderResult full = render(scene, RenderOptions{});
     scene.settings.modes.clipping = Clipping::guard_band;
     const RenderResult guard = render(scene, RenderOptions{});
@@ -186,14 +189,7 @@ TEST(HierarchicalZ, skipsHiddenBlocksWithoutChangingAByte) {
     scene.meshes.clear();
     scene.settings.width = scene.settings.height = 96;  // not a multiple of the tile: partial blocks too
     scene.settings.samples = 4;
-    for (int layer = 0; layer < 8; ++layer) {
-        const float z = -2.0f - static_cast<float>(layer);
-        SceneMesh mesh;
-        mesh.source = "inline";
-        mesh.data.positions = {{-9, -9, z}, {9, -9, z}, {9, 9, z}, {-9, 9, z}};
-        mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-        scene.meshes.push_back(mesh);
-    }
+    for (int layer = 0; layer < 8; ++layer) scene.meshes.push_back(square_wall(9, -2.0f - static_cast<float>(layer)));
     RenderOptions options;
     const RenderResult on = render(scene, options);
     scene.settings.modes.hierarchical_z = false;
