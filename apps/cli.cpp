@@ -6,7 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/command.h"
-#include "raster/errors.h"
+#include "raster/core/errors.h"
 
 namespace raster::cli {
 namespace {

@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "apps/command.h"
-#include "raster/errors.h"
-#include "raster/image.h"
-#include "raster/render.h"
-#include "raster/scene_format_seed001.h"
-#include "raster/scene_loader.h"
+#include "raster/core/errors.h"
+#include "raster/image/image.h"
+#include "raster/pipeline/render.h"
+#include "raster/formats/scene_format_seed001.h"
+#include "raster/formats/scene_loader.h"
 
 namespace raster::cli {
 namespace {

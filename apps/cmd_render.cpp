@@ -6,12 +6,13 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
-#include "raster/errors.h"
-#include "raster/image.h"
-#include "raster/render.h"
-#include "raster/resolve.h"
-#include "raster/scene_format_seed000.h"
-#include "raster/scene_loader.h"
+#include "raster/core/errors.h"
+#include "raster/image/image.h"
+#include "raster/pipeline/render.h"
+#include "raster/pipeline/resolve.h"
+#include "raster/formats/scene_format_seed000.h"
+#include "raster/formats/scene_loader.h"
+#include "raster/scene/validation.h"
 
 namespace raster::cli {
 namespace {

@@ -10,14 +10,15 @@
 
 #include "apps/command.h"
 #include "apps/progress_bar.h"
-#include "oracle/comparison.h"
-#include "oracle/diff_map.h"
-#include "oracle/embree_device.h"
-#include "oracle/report.h"
-#include "raster/errors.h"
-#include "raster/file_io.h"
-#include "raster/image.h"
-#include "raster/scene_loader.h"
+#include "oracle/compare/scene_comparison.h"
+#include "oracle/compare/diff_map.h"
+#include "oracle/reference/embree_device.h"
+#include "oracle/report/report.h"
+#include "raster/core/errors.h"
+#include "raster/core/file_io.h"
+#include "raster/image/image.h"
+#include "raster/formats/scene_loader.h"
+#include "raster/scene/validation.h"
 
 namespace raster::cli {
 namespace {

@@ -6,14 +6,15 @@
 
 #include "apps/command.h"
 #include "apps/progress_bar.h"
-#include "oracle/embree_device.h"
-#include "oracle/pareto_plot.h"
-#include "oracle/tradeoff.h"
-#include "oracle/tradeoff_modes.h"
-#include "raster/errors.h"
-#include "raster/file_io.h"
-#include "raster/render.h"
-#include "raster/scene_loader.h"
+#include "oracle/reference/embree_device.h"
+#include "oracle/tradeoff/pareto_plot.h"
+#include "oracle/tradeoff/tradeoff.h"
+#include "oracle/tradeoff/tradeoff_modes.h"
+#include "raster/core/errors.h"
+#include "raster/core/file_io.h"
+#include "raster/pipeline/render.h"
+#include "raster/formats/scene_loader.h"
+#include "raster/scene/validation.h"
 
 namespace raster::cli {
 namespace {

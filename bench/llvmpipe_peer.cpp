@@ -1,6 +1,6 @@
 // The llvmpipe peer: an OSMesa context, one VBO/IBO uploaded at construction, a GLSL 1.30 per-fragment
 // Blinn-Phong program matching raster::evaluate_lighting, and an optional 4-sample FBO.
-#include "llvmpipe_peer.h"
+#include "bench/llvmpipe_peer.h"
 
 // libOSMesa exports the GL entry points itself, so the prototypes link directly against it.
 #define GL_GLEXT_PROTOTYPES 1
@@ -16,7 +16,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "raster/vertex_stage.h"
+#include "raster/pipeline/vertex_stage.h"
 
 namespace raster_bench {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "raster/scene.h"
+#include "raster/scene/scene.h"
 
 namespace raster_bench {
 

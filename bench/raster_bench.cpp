@@ -18,15 +18,15 @@
 #include <string>
 #include <vector>
 
-#include "raster/image.h"
-#include "raster/render.h"
-#include "raster/scene.h"
-#include "raster/scene_loader.h"
-#include "raster/vertex_stage.h"
-#include "oracle/oracle.h"
+#include "raster/image/image.h"
+#include "raster/pipeline/render.h"
+#include "raster/scene/scene.h"
+#include "raster/formats/scene_loader.h"
+#include "raster/pipeline/vertex_stage.h"
+#include "oracle/reference/ray_caster.h"
 
 #ifdef RASTER_HAVE_OSMESA
-#include "llvmpipe_peer.h"
+#include "bench/llvmpipe_peer.h"
 #endif
 
 namespace {

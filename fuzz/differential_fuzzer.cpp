@@ -8,10 +8,11 @@
 
 #include "fuzz/fuzz_check.h"
 #include "fuzz/fuzzed_scene.h"
-#include "oracle/comparison.h"
-#include "raster/errors.h"
-#include "raster/render.h"
-#include "raster/vertex_stage.h"
+#include "oracle/compare/scene_comparison.h"
+#include "raster/core/errors.h"
+#include "raster/pipeline/render.h"
+#include "raster/pipeline/vertex_stage.h"
+#include "raster/scene/validation.h"
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "raster/conventions.h"
+#include "raster/core/conventions.h"
 
 namespace raster::fuzz {
 namespace {

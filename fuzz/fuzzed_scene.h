@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "raster/scene.h"
+#include "raster/scene/scene.h"
 
 namespace raster::fuzz {
 

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string_view>
 
-#include "raster/errors.h"
-#include "raster/mesh_ply.h"
+#include "raster/core/errors.h"
+#include "raster/formats/mesh_ply.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     try {

@@ -21,14 +21,15 @@
 
 #include "fuzz/fuzz_check.h"
 #include "fuzz/fuzzed_scene.h"
-#include "raster/camera_rays.h"
-#include "raster/clip.h"
-#include "raster/errors.h"
-#include "raster/rasterize.h"
-#include "raster/render.h"
-#include "raster/sample_pattern.h"
-#include "raster/setup.h"
-#include "raster/vertex_stage.h"
+#include "raster/pipeline/camera_rays.h"
+#include "raster/pipeline/clip.h"
+#include "raster/core/errors.h"
+#include "raster/pipeline/reference_rasterizer.h"
+#include "raster/pipeline/render.h"
+#include "raster/pipeline/sample_pattern.h"
+#include "raster/pipeline/setup.h"
+#include "raster/pipeline/vertex_stage.h"
+#include "raster/scene/validation.h"
 
 // The checks are not what the fuzzer should explore: without coverage instrumentation they cost less and add no
 // noise to the coverage signal.
@@ -310,7 +311,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     options.alpha = input.ConsumeBool();
     const uint64_t frame_samples =
         uint64_t(scene.settings.width) * uint64_t(scene.settings.height) * uint64_t(scene.settings.samples);
-    if (!camera_problem(scene.camera).empty() || frame_samples > kMaxFrameSamples) return 0;
+    if (camera_problem(scene.camera) || frame_samples > kMaxFrameSamples) return 0;
     SceneMesh fan;
     if (with_fan && fuzzed_fan(input, scene.camera, scene.settings, fan)) scene.meshes.push_back(std::move(fan));
     try {

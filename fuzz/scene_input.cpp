@@ -5,8 +5,8 @@
 #include <string_view>
 
 #include "fuzz/sandbox.h"
-#include "raster/errors.h"
-#include "raster/scene_loader.h"
+#include "raster/core/errors.h"
+#include "raster/formats/scene_loader.h"
 
 namespace raster::fuzz {
 namespace {

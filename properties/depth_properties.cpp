@@ -13,7 +13,7 @@
 #include "properties/failure.h"
 #include "properties/generators.h"
 #include "properties/printing.h"
-#include "tests/reference/coverage_reference.h"
+#include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {
 namespace {

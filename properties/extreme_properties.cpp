@@ -13,8 +13,9 @@
 #include "properties/generators.h"
 #include "properties/printing.h"
 #include "properties/tiling_check.h"
-#include "raster/errors.h"
-#include "tests/reference/coverage_reference.h"
+#include "raster/core/errors.h"
+#include "properties/reference/coverage_reference.h"
+#include "raster/scene/validation.h"
 
 namespace raster::properties {
 namespace {

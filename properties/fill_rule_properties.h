@@ -5,7 +5,7 @@
 #include <glm/vec2.hpp>
 
 #include "properties/implementation.h"
-#include "tests/reference/coverage_reference.h"
+#include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {
 

@@ -11,9 +11,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "properties/documented_samples.h"
+#include "properties/reference/documented_samples.h"
 #include "properties/printing.h"
-#include "raster/render.h"
+#include "raster/pipeline/render.h"
+#include "raster/scene/validation.h"
 
 namespace raster::properties {
 namespace {
@@ -1060,7 +1061,7 @@ Gen<CameraCase> cameras() {
         camera.eye = c.eye;
         camera.target = c.target;
         camera.up = c.up;
-        return camera_problem(camera).empty();
+        return !camera_problem(camera);
     };
     return gen::suchThat(
         gen::weightedOneOf<CameraCase>({

@@ -12,7 +12,7 @@
 #include <rapidcheck.h>
 
 #include "properties/stage_driver.h"
-#include "tests/mutants/building_blocks.h"
+#include "mutants/building_blocks.h"
 
 namespace raster::properties {
 

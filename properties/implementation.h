@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "raster/pipeline.h"
-#include "tests/mutants/building_blocks.h"
-#include "tests/mutants/catalogue.h"
+#include "raster/pipeline/stages.h"
+#include "mutants/building_blocks.h"
+#include "mutants/catalogue.h"
 
 namespace raster::properties {
 

@@ -12,9 +12,9 @@
 #include "properties/failure.h"
 #include "properties/generators.h"
 #include "properties/printing.h"
-#include "raster/scene.h"
-#include "raster/transform.h"
-#include "raster/vertex_stage.h"
+#include "raster/scene/scene.h"
+#include "raster/core/transform.h"
+#include "raster/pipeline/vertex_stage.h"
 
 namespace raster::properties {
 namespace {

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <map>
 
-#include "oracle/comparison.h"
-#include "raster/scene_loader.h"
+#include "oracle/compare/scene_comparison.h"
+#include "raster/formats/scene_loader.h"
 
 namespace raster::properties {
 namespace {

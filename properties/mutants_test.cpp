@@ -28,7 +28,7 @@
 #include <rapidcheck.h>
 
 #include "properties/property_list.h"
-#include "tests/mutants/catalogue.h"
+#include "mutants/catalogue.h"
 #ifdef RASTER_HAVE_ORACLE
 #include "properties/mutants_oracle_checks.h"
 #endif

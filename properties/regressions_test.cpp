@@ -10,7 +10,7 @@
 #include "properties/generators.h"
 #include "properties/implementation.h"
 #include "properties/tiling_check.h"
-#include "tests/reference/coverage_reference.h"
+#include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {
 namespace {

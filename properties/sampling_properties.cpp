@@ -4,11 +4,11 @@
 #include <cmath>
 #include <string>
 
-#include "properties/documented_samples.h"
+#include "properties/reference/documented_samples.h"
 #include "properties/failure.h"
 #include "properties/generators.h"
 #include "properties/printing.h"
-#include "tests/reference/coverage_reference.h"
+#include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {
 

@@ -3,7 +3,7 @@
 
 #include <bit>
 
-#include "properties/documented_samples.h"
+#include "properties/reference/documented_samples.h"
 #include "properties/printing.h"
 
 namespace raster::properties {

@@ -12,13 +12,13 @@
 #include <glm/vec4.hpp>
 
 #include "properties/implementation.h"
-#include "raster/clip.h"
-#include "raster/conventions.h"
-#include "raster/render.h"
-#include "raster/scene.h"
-#include "raster/setup.h"
-#include "raster/visibility_buffer.h"
-#include "tests/reference/coverage_reference.h"
+#include "raster/pipeline/clip.h"
+#include "raster/core/conventions.h"
+#include "raster/pipeline/render.h"
+#include "raster/scene/scene.h"
+#include "raster/pipeline/setup.h"
+#include "raster/pipeline/visibility_buffer.h"
+#include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {
 

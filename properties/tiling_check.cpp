@@ -7,9 +7,9 @@
 #include <sstream>
 #include <utility>
 
-#include "properties/documented_samples.h"
+#include "properties/reference/documented_samples.h"
 #include "properties/failure.h"
-#include "tests/reference/coverage_reference.h"
+#include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {
 namespace {

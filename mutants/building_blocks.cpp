@@ -1,0 +1,40 @@
+// The real transform chain, observed the way users reach it: through a scene file and the loader.
+#include "mutants/building_blocks.h"
+
+#include <cstdio>
+#include <string>
+
+#include "raster/formats/scene_loader.h"
+
+namespace raster::mutants {
+namespace {
+
+// Nine significant digits read back to the same float.
+std::string number(float value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
+    return text;
+}
+
+std::string vector(const glm::vec3& v) {
+    char text[128];  // formatted in one go: g++ 12 warns falsely (-Wrestrict) on "literal" + std::string&&
+    std::snprintf(text, sizeof text, "[%.9g, %.9g, %.9g]", static_cast<double>(v.x), static_cast<double>(v.y),
+                  static_cast<double>(v.z));
+    return text;
+}
+
+}  // namespace
+
+glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain) {
+    const std::string text =
+        "meshes:\n"
+        "  - vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+        "    faces: [[0, 1, 2]]\n"
+        "    transform:\n"
+        "      - scale: " + vector(chain.scale) + "\n"
+        "      - rotate: {angle: " + number(chain.degrees) + ", axis: " + vector(chain.axis) + "}\n"
+        "      - translate: " + vector(chain.offset) + "\n";
+    return parse_scene(text, "model_matrix_from_scene_file.yaml").meshes.at(0).model;
+}
+
+}  // namespace raster::mutants

@@ -1,0 +1,38 @@
+// The building blocks that render() does not take through PipelineStages (matrix builders, the loader's
+// transform chain), as replaceable functions with the real ones as defaults, so checks can take them as parameters.
+#pragma once
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "raster/core/transform.h"
+
+namespace raster::mutants {
+
+// A mesh transform chain as a scene file lists it: `scale`, then `rotate`, then `translate` (README "Scene format").
+struct ScaleRotateTranslate {
+    glm::vec3 scale{1.0f};
+    float degrees = 0.0f;
+    glm::vec3 axis{0.0f, 0.0f, 1.0f};
+    glm::vec3 offset{0.0f};
+};
+
+// The model matrix the scene loader builds for that chain: it writes a one-mesh raster scene listing the three
+// steps (floats printed so that they read back exactly) and returns parse_scene's model matrix.
+glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain);
+
+// Each block is a plain function pointer; a mutant replaces one. The vertex stage of PipelineStages calls the
+// real look_at and perspective builders itself, so a mutant of one of those also replaces the vertex stage
+// with one that uses the faulty builder (see catalogue.cpp).
+struct BuildingBlocks {
+    glm::mat4 (*look_at)(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) = look_at_matrix;
+    glm::mat4 (*look_at_inverse)(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) =
+        look_at_model_matrix;
+    glm::mat4 (*perspective)(float fov_y_degrees, float aspect, float near, float far) = perspective_matrix;
+    glm::mat4 (*viewport)(int width, int height) = viewport_matrix;
+    glm::mat3 (*normal_matrix)(const glm::mat4& model) = raster::normal_matrix;
+    glm::mat4 (*model_matrix)(const ScaleRotateTranslate& chain) = model_matrix_from_scene_file;
+};
+
+}  // namespace raster::mutants

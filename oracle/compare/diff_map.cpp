@@ -1,0 +1,32 @@
+// The disagreement map: per pixel, the worst class among its samples.
+#include "oracle/compare/diff_map.h"
+
+#include <algorithm>
+
+namespace raster::oracle {
+
+Image diff_map(const std::vector<SampleClass>& classes, int samples, const Image& raster_image) {
+    Image map(raster_image.width, raster_image.height, 3);
+    for (int y = 0; y < map.height; ++y) {
+        for (int x = 0; x < map.width; ++x) {
+            const size_t first = (static_cast<size_t>(y) * map.width + x) * static_cast<size_t>(samples);
+            bool genuine = false, ambiguous = false;
+            for (int s = 0; s < samples; ++s) {
+                genuine |= is_genuine(classes[first + s]);
+                ambiguous |= is_ambiguous(classes[first + s]);
+            }
+            uint8_t* out = map.at(x, y);
+            if (genuine || ambiguous) {
+                std::copy_n(genuine ? kGenuineColor : kAmbiguousColor, 3, out);
+                continue;
+            }
+            const uint8_t* in = raster_image.at(x, y);
+            const float luma = raster_image.channels >= 3 ? 0.2126f * in[0] + 0.7152f * in[1] + 0.0722f * in[2] : in[0];
+            const auto grey = static_cast<uint8_t>(20.0f + 0.35f * luma + 0.5f);
+            out[0] = out[1] = out[2] = grey;
+        }
+    }
+    return map;
+}
+
+}  // namespace raster::oracle

@@ -1,0 +1,192 @@
+// The comparator: per-sample classification, row by row over threads, with per-row counts summed in order.
+#include "oracle/compare/sample_classifier.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <stdexcept>
+
+#include <glm/common.hpp>
+
+#include "oracle/reference/precision.h"
+#include "raster/pipeline/camera_rays.h"
+#include "raster/image/image.h"
+#include "raster/core/parallel.h"
+
+namespace raster::oracle {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+bool is_triangle(const ReferenceGeometry& reference, uint32_t id) { return id != kNoTriangle && id < reference.size(); }
+
+// The byte colour a sample shows (what an SSAA image averages).
+std::array<uint8_t, 3> color_bytes(const Shader& shader, uint32_t triangle, const glm::vec3& bary) {
+    const glm::vec3 c = shader.shade(triangle, bary);
+    return {to_byte(c.x), to_byte(c.y), to_byte(c.z)};
+}
+
+}  // namespace
+
+const char* to_string(SampleClass c) {
+    switch (c) {
+        case SampleClass::agree: return "agree";
+        case SampleClass::edge_band: return "edge_band";
+        case SampleClass::depth_tie: return "depth_tie";
+        case SampleClass::clip_boundary: return "clip_boundary";
+        case SampleClass::facing: return "facing";
+        case SampleClass::visibility: return "visibility";
+        case SampleClass::barycentrics: return "barycentrics";
+        case SampleClass::depth: return "depth";
+        case SampleClass::color: return "color";
+    }
+    return "?";
+}
+
+SampleEntry sample_entry(const VisibilityBuffer& buffer, size_t index) {
+    return {buffer.triangle[index], buffer.bary[index], buffer.view_depth[index]};
+}
+
+uint64_t ComparisonCounts::ambiguous_total() const {
+    return count(SampleClass::edge_band) + count(SampleClass::depth_tie) + count(SampleClass::clip_boundary) +
+           count(SampleClass::facing);
+}
+
+uint64_t ComparisonCounts::genuine_total() const {
+    return count(SampleClass::visibility) + count(SampleClass::barycentrics) + count(SampleClass::depth) +
+           count(SampleClass::color);
+}
+
+AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
+    const ReferencePolygon& polygon = reference.polygon(id);
+    const SquareRange range = reference.range_around(id, screen, polygon.radius);
+    AgreementTolerance tolerance;
+    const double bary_rounding = barycentric_rounding(polygon.relative_depth_error);
+    const double depth_rounding = view_depth_rounding(polygon.relative_depth_error);
+    if (!range.bounded || !std::isfinite(bary_rounding) || !std::isfinite(depth_rounding))
+        return {glm::dvec3(kInfinity), kInfinity};
+    // Both renderers round: twice the per-renderer rounding; and Embree's own evaluation error.
+    tolerance.bary = (range.max_bary - range.min_bary) + glm::dvec3(2.0 * bary_rounding) +
+                     reference.embree_barycentric_error(id, screen);
+    tolerance.view_depth = (range.max_view_depth - range.min_view_depth) + 2.0 * depth_rounding * range.max_view_depth +
+                           reference.embree_view_depth_error(id, screen);
+    return tolerance;
+}
+
+bool in_edge_band(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
+    return reference.boundary_distance(id, screen) <= reference.polygon(id).radius;
+}
+
+bool on_clip_boundary(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
+    const ReferencePolygon& polygon = reference.polygon(id);
+    const SquareRange range = reference.range_around(id, screen, polygon.radius);
+    if (!range.bounded) return true;  // the plane is grazed within the square: anything may happen there
+    // The square must reach the triangle: some corner on the inner side of every edge (an outer estimate).
+    if (range.max_bary.x < 0.0 || range.max_bary.y < 0.0 || range.max_bary.z < 0.0) return false;
+    const double low = range.min_view_depth - polygon.depth_error, high = range.max_view_depth + polygon.depth_error;
+    return (low <= reference.near() && reference.near() <= high) || (low <= reference.far() && reference.far() <= high);
+}
+
+bool depth_tie(const ReferenceGeometry& reference, uint32_t a, uint32_t b, const glm::dvec2& screen) {
+    for (uint32_t id : {a, b}) {
+        const ReferencePolygon& p = reference.polygon(id);
+        if (p.culled || !reference.contains(id, screen)) return false;  // then one of them should not be there
+    }
+    const SquareRange ra = reference.range_around(a, screen, reference.polygon(a).radius);
+    const SquareRange rb = reference.range_around(b, screen, reference.polygon(b).radius);
+    if (!ra.bounded || !rb.bounded) return true;
+    // Each triangle's reversed-Z error, and Embree's own at this sample (its choice rests on its t).
+    const double ea = reference.polygon(a).reversed_z_error + reference.embree_reversed_z_error(a, screen);
+    const double eb = reference.polygon(b).reversed_z_error + reference.embree_reversed_z_error(b, screen);
+    return ra.min_reversed_z - ea <= rb.max_reversed_z + eb && rb.min_reversed_z - eb <= ra.max_reversed_z + ea;
+}
+
+SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2& screen, const SampleEntry& raster,
+                            const SampleEntry& oracle) {
+    if (raster.triangle == oracle.triangle) {
+        if (raster.triangle == kNoTriangle) return SampleClass::agree;
+        if (!is_triangle(reference, raster.triangle)) return SampleClass::visibility;  // an id no scene triangle has
+        const uint32_t id = raster.triangle;
+        const glm::dvec3 bary_gap = glm::abs(glm::dvec3(raster.bary) - glm::dvec3(oracle.bary));
+        const double depth_gap = std::fabs(double(raster.view_depth) - double(oracle.view_depth));
+        // The rounding alone is a lower bound of the tolerance: most samples are settled without the spread.
+        const ReferencePolygon& polygon = reference.polygon(id);
+        const double bary_rounding = 2.0 * barycentric_rounding(polygon.relative_depth_error);
+        const double depth_rounding = 2.0 * view_depth_rounding(polygon.relative_depth_error) *
+                                      std::min(double(raster.view_depth), double(oracle.view_depth));
+        if (std::max({bary_gap.x, bary_gap.y, bary_gap.z}) <= bary_rounding && depth_gap <= depth_rounding)
+            return SampleClass::agree;
+        const AgreementTolerance tolerance = agreement_tolerance(reference, id, screen);
+        if (bary_gap.x > tolerance.bary.x || bary_gap.y > tolerance.bary.y || bary_gap.z > tolerance.bary.z ||
+            !std::isfinite(bary_gap.x + bary_gap.y + bary_gap.z))
+            return SampleClass::barycentrics;
+        if (depth_gap > tolerance.view_depth || !std::isfinite(depth_gap)) return SampleClass::depth;
+        return SampleClass::agree;
+    }
+    uint32_t involved[2];
+    int count = 0;
+    for (uint32_t id : {raster.triangle, oracle.triangle}) {
+        if (id == kNoTriangle) continue;
+        if (!is_triangle(reference, id)) return SampleClass::visibility;
+        involved[count++] = id;
+    }
+    // A triangle whose facing is uncertain may be missing altogether, whatever else holds at the sample.
+    for (int i = 0; i < count; ++i)
+        if (reference.polygon(involved[i]).facing_uncertain) return SampleClass::facing;
+    for (int i = 0; i < count; ++i)
+        if (on_clip_boundary(reference, involved[i], screen)) return SampleClass::clip_boundary;
+    for (int i = 0; i < count; ++i)
+        if (in_edge_band(reference, involved[i], screen)) return SampleClass::edge_band;
+    // Embree tests edge by edge, so beyond the band it may still show a triangle that exactly misses the sample.
+    if (oracle.triangle != kNoTriangle && !reference.contains(oracle.triangle, screen) &&
+        reference.embree_may_cover(oracle.triangle, screen))
+        return SampleClass::edge_band;
+    if (count == 2 && depth_tie(reference, involved[0], involved[1], screen)) return SampleClass::depth_tie;
+    return SampleClass::visibility;
+}
+
+VisibilityComparison compare_visibility(const CompareInputs& in) {
+    const VisibilityBuffer& raster = *in.raster;
+    const VisibilityBuffer& oracle = *in.oracle;
+    if (raster.width != oracle.width || raster.height != oracle.height || raster.samples != oracle.samples)
+        throw std::invalid_argument("compare_visibility: the two visibility buffers have different sizes");
+    VisibilityComparison result;
+    result.classes.assign(raster.size(), SampleClass::agree);
+    const int height = raster.height, width = raster.width, samples = raster.samples;
+    std::vector<ComparisonCounts> row_counts(static_cast<size_t>(height));
+    std::vector<int> row_color_error(static_cast<size_t>(height), 0);
+    const bool same_shader = in.raster_shader == in.reference_shader;
+    parallel_for(static_cast<size_t>(height), in.threads, [&](size_t row) {
+        const int py = static_cast<int>(row);
+        ComparisonCounts& counts = row_counts[row];
+        int& color_error = row_color_error[row];
+        for (int px = 0; px < width; ++px) {
+            for (int s = 0; s < samples; ++s) {
+                const size_t at = raster.index(px, py, s);
+                const SampleEntry r = sample_entry(raster, at), o = sample_entry(oracle, at);
+                const glm::dvec2 screen = sample_screen_position(px, py, s, in.offsets, in.fixed_bits);
+                SampleClass verdict = classify_sample(*in.reference, screen, r, o);
+                if (verdict == SampleClass::agree && r.triangle != kNoTriangle) {
+                    const auto shown = color_bytes(*in.raster_shader, r.triangle, r.bary);
+                    if (!same_shader && shown != color_bytes(*in.reference_shader, r.triangle, r.bary))
+                        verdict = SampleClass::color;
+                    else {
+                        const auto expected = color_bytes(*in.reference_shader, o.triangle, o.bary);
+                        for (int c = 0; c < 3; ++c)
+                            color_error = std::max(color_error, std::abs(int(shown[c]) - int(expected[c])));
+                    }
+                }
+                result.classes[at] = verdict;
+                ++counts.by_class[static_cast<size_t>(verdict)];
+            }
+        }
+    });
+    for (size_t row = 0; row < row_counts.size(); ++row) {
+        for (int c = 0; c < kSampleClassCount; ++c) result.counts.by_class[c] += row_counts[row].by_class[c];
+        result.max_color_error = std::max(result.max_color_error, row_color_error[row]);
+    }
+    return result;
+}
+
+}  // namespace raster::oracle

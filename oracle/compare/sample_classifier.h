@@ -1,0 +1,93 @@
+// The comparator: classes every sample of two visibility buffers (raster's and the oracle's) as agree, ambiguous
+// (edge band, depth tie, clip boundary) or genuine (visibility, barycentrics, depth, colour), with the bounds of
+// precision.h measured on the exact geometry of reference_geometry.h.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "oracle/reference/reference_geometry.h"
+#include "raster/pipeline/sample_pattern.h"
+#include "raster/pipeline/shade.h"
+#include "raster/pipeline/visibility_buffer.h"
+
+namespace raster::oracle {
+
+enum class SampleClass : uint8_t {
+    agree,          // same triangle (within the barycentric, depth and colour bounds), or both empty
+    edge_band,      // ambiguous: within the radius of an edge of a triangle involved, or where Embree's edge-by-edge
+                    // test may show a triangle that exactly misses the sample (precision.h, section 5)
+    depth_tie,      // ambiguous: both triangles cover the sample and their depths are within the tie bound
+    clip_boundary,  // ambiguous: the sample is where a triangle involved meets the near or far plane
+    facing,         // ambiguous: culling is on and a triangle involved is too close to edge-on to call its facing
+    visibility,     // genuine: a different triangle (or none) outside every allowance
+    barycentrics,   // genuine: same triangle, barycentrics apart by more than their bound
+    depth,          // genuine: same triangle, view depths apart by more than their bound
+    color,          // genuine: same triangle and barycentrics, but raster's shading gives another colour
+};
+inline constexpr int kSampleClassCount = 9;
+const char* to_string(SampleClass c);  // "agree", "edge_band", ..., "color"
+inline bool is_ambiguous(SampleClass c) { return c >= SampleClass::edge_band && c <= SampleClass::facing; }
+inline bool is_genuine(SampleClass c) { return c >= SampleClass::visibility; }
+
+// One sample of a visibility buffer.
+struct SampleEntry {
+    uint32_t triangle = kNoTriangle;
+    glm::vec3 bary{0.0f};
+    float view_depth = 0.0f;
+};
+SampleEntry sample_entry(const VisibilityBuffer& buffer, size_t index);
+
+// How far raster's and the oracle's barycentrics and view depth may be apart for triangle `id` at `screen`: the
+// spread of the exact values over the square of half-side `radius`, plus both renderers' float rounding, plus
+// Embree's own evaluation error of its barycentrics and depth at the sample.
+// Unbounded (infinite) where the ray grazes the triangle's plane within the square.
+struct AgreementTolerance {
+    glm::dvec3 bary{0.0};
+    double view_depth = 0;
+};
+AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);
+
+// The three allowances for a disagreement, one triangle (or a pair) at a time.
+bool in_edge_band(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);
+bool on_clip_boundary(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);
+bool depth_tie(const ReferenceGeometry& reference, uint32_t a, uint32_t b, const glm::dvec2& screen);
+
+// Classes one sample at screen position `screen` from visibility alone (everything but colour).
+SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2& screen, const SampleEntry& raster,
+                            const SampleEntry& oracle);
+
+struct ComparisonCounts {
+    std::array<uint64_t, kSampleClassCount> by_class{};
+    uint64_t count(SampleClass c) const { return by_class[static_cast<size_t>(c)]; }
+    uint64_t ambiguous_total() const;
+    uint64_t genuine_total() const;
+};
+
+struct CompareInputs {
+    const VisibilityBuffer* raster = nullptr;
+    const VisibilityBuffer* oracle = nullptr;
+    const ReferenceGeometry* reference = nullptr;
+    const Shader* raster_shader = nullptr;     // raster's pipeline's shading (may be the reference one)
+    const Shader* reference_shader = nullptr;  // the real shading, which colours the oracle
+    FixedSampleOffsets offsets;                // raster's sample positions
+    int fixed_bits = 0;
+    int threads = 0;
+};
+
+struct VisibilityComparison {
+    ComparisonCounts counts;
+    int max_color_error = 0;            // 0-255: largest channel difference between the two colours, agreeing samples
+    std::vector<SampleClass> classes;   // per sample, in visibility-buffer order
+};
+
+// Classes every sample (both buffers must have the same size, else std::invalid_argument). On samples that agree on visibility, colour is
+// then checked: raster's shader at raster's (triangle, barycentrics) must give the same bytes as the reference
+// shader at the same inputs (precision.h, section 7). Deterministic for any thread count.
+VisibilityComparison compare_visibility(const CompareInputs& inputs);
+
+}  // namespace raster::oracle

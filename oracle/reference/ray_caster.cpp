@@ -1,0 +1,167 @@
+// The Embree oracle: one triangle geometry in view space, one ray per sample, rows split over threads.
+#include "oracle/reference/ray_caster.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "oracle/reference/embree_device.h"
+#include "raster/pipeline/camera_rays.h"
+#include "raster/core/parallel.h"
+#include "raster/pipeline/sample_pattern.h"
+
+namespace raster::oracle {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr size_t kPacketSize = 8;  // RTCRayHit8
+
+double milliseconds_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Every scene vertex in view space, indexed like geometry.clip (global vertex indices).
+std::vector<glm::vec3> view_space_vertices(const Scene& scene, const TransformedScene& geometry) {
+    std::vector<glm::vec3> vertices(geometry.clip.size());
+    for (size_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
+        const glm::mat4 model_view = geometry.view * scene.meshes[mesh].model;
+        const uint32_t first = geometry.mesh_first_vertex[mesh];
+        const auto& positions = scene.meshes[mesh].data.positions;
+        for (size_t i = 0; i < positions.size(); ++i)
+            vertices[first + i] = glm::vec3(model_view * glm::vec4(positions[i], 1.0f));
+    }
+    return vertices;
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// Front-facing seen from the eye at the view-space origin: counter-clockwise in NDC is a normal pointing back at
+// the eye, i.e. dot(normal, vertex) < 0 (perspective keeps the orientation of what lies in front of the eye).
+bool faces_eye(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+    const glm::dvec3 da(a), db(b), dc(c);
+    return glm::dot(glm::cross(db - da, dc - da), da) < 0.0;
+}
+
+// Owns an RTCScene.
+struct SceneHandle {
+    RTCScene scene = nullptr;
+    ~SceneHandle() {
+        if (scene) rtcReleaseScene(scene);
+    }
+};
+
+}  // namespace
+
+const char* to_string(OracleMode mode) { return mode == OracleMode::robust ? "robust" : "fast"; }
+
+OracleStats render_oracle(const Scene& scene, const TransformedScene& geometry, const OracleOptions& options,
+                          VisibilityBuffer& out) {
+    OracleStats stats;
+    const RenderSettings& settings = scene.settings;
+    const int threads = options.threads > 0 ? options.threads : default_thread_count();
+
+    auto start = Clock::now();
+    EmbreeDevice device("threads=" + std::to_string(threads));
+    const std::vector<glm::vec3> vertices = view_space_vertices(scene, geometry);
+    std::vector<uint32_t> scene_triangle;  // Embree primitive id -> scene triangle id
+    scene_triangle.reserve(geometry.triangles.size());
+    for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
+        const auto& v = geometry.triangles[id].v;
+        if (!finite(vertices[v[0]]) || !finite(vertices[v[1]]) || !finite(vertices[v[2]])) continue;
+        if (settings.cull_backfaces && !faces_eye(vertices[v[0]], vertices[v[1]], vertices[v[2]])) continue;
+        scene_triangle.push_back(id);
+    }
+    stats.triangles = scene_triangle.size();
+
+    SceneHandle handle;
+    handle.scene = rtcNewScene(device.get());
+    device.check("rtcNewScene");
+    rtcSetSceneFlags(handle.scene, options.mode == OracleMode::robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
+    if (!scene_triangle.empty()) {
+        RTCGeometry mesh = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+        device.check("rtcNewGeometry");
+        auto* vertex_buffer = static_cast<float*>(rtcSetNewGeometryBuffer(
+            mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
+        auto* index_buffer = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), scene_triangle.size()));
+        device.check("rtcSetNewGeometryBuffer");
+        for (size_t i = 0; i < vertices.size(); ++i)
+            for (int k = 0; k < 3; ++k) vertex_buffer[3 * i + k] = vertices[i][k];
+        for (size_t i = 0; i < scene_triangle.size(); ++i)
+            for (int k = 0; k < 3; ++k) index_buffer[3 * i + k] = geometry.triangles[scene_triangle[i]].v[k];
+        rtcCommitGeometry(mesh);
+        rtcAttachGeometry(handle.scene, mesh);
+        rtcReleaseGeometry(mesh);
+        device.check("attaching the triangle geometry");
+    }
+    rtcCommitScene(handle.scene);
+    device.check("rtcCommitScene (BVH build)");
+    stats.ms_build = milliseconds_since(start);
+
+    start = Clock::now();
+    const std::vector<glm::vec2> offsets = sample_offsets(settings.samples, settings.pattern);
+    const int fixed_bits = fixed_bits_for(settings.snap_bits);
+    const FixedSampleOffsets fixed = fixed_sample_offsets(offsets, fixed_bits);
+    const int samples = static_cast<int>(offsets.size());
+    out.resize(settings.width, settings.height, samples);
+    const float near = scene.camera.near, far = scene.camera.far;
+    // Rays go to Embree in packets of 8 consecutive samples of a row (neighbouring samples: coherent rays).
+    parallel_for(static_cast<size_t>(settings.height), threads, [&](size_t row) {
+        const int py = static_cast<int>(row);
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        const size_t row_samples = static_cast<size_t>(settings.width) * static_cast<size_t>(samples);
+        const size_t row_first = out.index(0, py, 0);
+        for (size_t begin = 0; begin < row_samples; begin += kPacketSize) {
+            const size_t count = std::min(kPacketSize, row_samples - begin);
+            alignas(32) RTCRayHit8 packet;
+            alignas(32) int valid[kPacketSize];
+            for (size_t k = 0; k < kPacketSize; ++k) {
+                valid[k] = k < count ? -1 : 0;
+                const size_t i = begin + std::min(k, count - 1);  // inactive lanes repeat a real ray
+                const int px = static_cast<int>(i / static_cast<size_t>(samples));
+                const int s = static_cast<int>(i % static_cast<size_t>(samples));
+                const glm::dvec2 screen = sample_screen_position(px, py, s, fixed, fixed_bits);
+                const glm::dvec3 direction =
+                    view_ray_direction(geometry.projection, ndc_from_screen(screen, settings.width, settings.height));
+                packet.ray.org_x[k] = packet.ray.org_y[k] = packet.ray.org_z[k] = 0.0f;
+                packet.ray.dir_x[k] = static_cast<float>(direction.x);
+                packet.ray.dir_y[k] = static_cast<float>(direction.y);
+                packet.ray.dir_z[k] = static_cast<float>(direction.z);  // exactly -1: t is the view depth
+                packet.ray.tnear[k] = near;
+                packet.ray.tfar[k] = far;
+                packet.ray.time[k] = 0.0f;
+                packet.ray.mask[k] = 0xFFFFFFFFu;
+                packet.ray.id[k] = static_cast<unsigned>(k);
+                packet.ray.flags[k] = 0;
+                packet.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+                packet.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
+                packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+            }
+            rtcIntersect8(valid, handle.scene, &context, &packet);
+            for (size_t k = 0; k < count; ++k) {
+                const size_t at = row_first + begin + k;
+                if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
+                    out.bary[at] = glm::vec3(0.0f);
+                    out.view_depth[at] = 0.0f;
+                    continue;
+                }
+                const float u = packet.hit.u[k], v = packet.hit.v[k];
+                out.triangle[at] = scene_triangle[packet.hit.primID[k]];
+                out.bary[at] = glm::vec3(1.0f - u - v, u, v);
+                out.view_depth[at] = packet.ray.tfar[k];
+            }
+        }
+    });
+    device.check("rtcIntersect8");
+    stats.ms_trace = milliseconds_since(start);
+    return stats;
+}
+
+}  // namespace raster::oracle

@@ -1,0 +1,322 @@
+// Exact clipping and projection of every triangle in double, with the precision model's bounds per polygon.
+#include "oracle/reference/reference_geometry.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "oracle/reference/precision.h"
+#include "raster/pipeline/camera_rays.h"
+
+namespace raster::oracle {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A polygon vertex during exact clipping: its clip position, the magnitudes its float version was computed
+// from, its float error bound, and what made the edge from it to the next vertex.
+struct ClipVertex {
+    glm::dvec4 clip;
+    glm::dvec4 magnitudes;
+    glm::dvec4 error;
+    EdgeKind outgoing;
+};
+
+enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };
+
+// The same planes as raster's clipper (raster/clip.cpp), >= 0 inside.
+double plane_distance(int plane, const glm::dvec4& p, double near, double far) {
+    switch (plane) {
+        case kNear: return p.w - near;
+        case kFar: return far - p.w;
+        case kLeft: return p.x + p.w;
+        case kRight: return p.w - p.x;
+        case kBottom: return p.y + p.w;
+        default: return p.w - p.y;
+    }
+}
+
+EdgeKind plane_edge_kind(int plane) {
+    return plane == kNear ? EdgeKind::near : plane == kFar ? EdgeKind::far : EdgeKind::side;
+}
+
+// Sutherland-Hodgman in double, keeping track of which plane made each edge.
+std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double near, double far) {
+    for (int plane = 0; plane < kPlaneCount && polygon.size() >= 3; ++plane) {
+        std::vector<ClipVertex> out;
+        const size_t n = polygon.size();
+        for (size_t i = 0; i < n; ++i) {
+            const ClipVertex& current = polygon[i];
+            const ClipVertex& next = polygon[(i + 1) % n];
+            const double d_current = plane_distance(plane, current.clip, near, far);
+            const double d_next = plane_distance(plane, next.clip, near, far);
+            const bool current_in = d_current >= 0.0, next_in = d_next >= 0.0;
+            if (current_in) out.push_back(current);
+            if (current_in == next_in) continue;
+            // Always from the inside vertex towards the outside one, as raster does.
+            const ClipVertex& in = current_in ? current : next;
+            const ClipVertex& outside = current_in ? next : current;
+            const double d_in = current_in ? d_current : d_next, d_out = current_in ? d_next : d_current;
+            const double t = d_in / (d_in - d_out);
+            ClipVertex cut;
+            cut.clip = in.clip + t * (outside.clip - in.clip);
+            cut.magnitudes = glm::max(in.magnitudes, outside.magnitudes);
+            cut.error = clip_step_error(in.error, outside.error, in.magnitudes, outside.magnitudes);
+            // Leaving the half-space, the next edge runs along the plane; entering it, along the original edge.
+            cut.outgoing = current_in ? plane_edge_kind(plane) : current.outgoing;
+            out.push_back(cut);
+        }
+        polygon = std::move(out);
+    }
+    if (polygon.size() < 3) polygon.clear();
+    return polygon;
+}
+
+// Whether some point of the triangle may be kept by a renderer while lying within the float error of the eye,
+// where a screen position is unbounded (precision.h, section 6, "the eye"): the triangle (x, y, w), clipped to
+// the box |x| <= w + E_x + E_w, |y| <= w + E_y + E_w, near - E_w <= w <= E_w with E its vertices' largest
+// errors, keeps a point. Sutherland-Hodgman keeps degenerate (collinear) input exact, which matters here: a
+// triangle seen exactly edge-on through the eye is the case that needs this.
+bool passes_by_the_eye(const std::vector<ClipVertex>& triangle, double near) {
+    glm::dvec4 e(0.0);
+    for (const ClipVertex& v : triangle) e = glm::max(e, v.error);
+    if (!(near <= 2.0 * e.w)) return false;  // the band of w is empty: the near plane cuts the eye's surroundings
+    const std::array<glm::dvec4, 6> half_spaces = {
+        // (a, b, c, d): a x + b y + c w + d >= 0
+        glm::dvec4(0, 0, -1, e.w),          glm::dvec4(0, 0, 1, e.w - near),
+        glm::dvec4(-1, 0, 1, e.x + e.w),    glm::dvec4(1, 0, 1, e.x + e.w),
+        glm::dvec4(0, -1, 1, e.y + e.w),    glm::dvec4(0, 1, 1, e.y + e.w)};
+    std::vector<glm::dvec3> polygon;
+    for (const ClipVertex& v : triangle) polygon.emplace_back(v.clip.x, v.clip.y, v.clip.w);
+    for (const glm::dvec4& h : half_spaces) {
+        std::vector<glm::dvec3> out;
+        const size_t n = polygon.size();
+        for (size_t i = 0; i < n; ++i) {
+            const glm::dvec3 &a = polygon[i], &b = polygon[(i + 1) % n];
+            const double da = glm::dot(glm::dvec3(h), a) + h.w, db = glm::dot(glm::dvec3(h), b) + h.w;
+            if (da >= 0.0) out.push_back(a);
+            if ((da >= 0.0) != (db >= 0.0)) out.push_back(a + (da / (da - db)) * (b - a));
+        }
+        polygon = std::move(out);
+        if (polygon.empty()) return false;
+    }
+    return true;
+}
+
+glm::dmat4 absolute(const glm::dmat4& m) {
+    glm::dmat4 a;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) a[c][r] = std::fabs(m[c][r]);
+    return a;
+}
+
+double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
+
+}  // namespace
+
+double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
+    const glm::dvec2 d = b - a, o = a - p;  // the offset from p at t is o + t d
+    auto at = [&](double t) {
+        t = std::clamp(t, 0.0, 1.0);
+        return std::max(std::fabs(o.x + t * d.x), std::fabs(o.y + t * d.y));
+    };
+    double best = std::min(at(0.0), at(1.0));
+    if (d.x != 0.0) best = std::min(best, at(-o.x / d.x));
+    if (d.y != 0.0) best = std::min(best, at(-o.y / d.y));
+    if (d.x != d.y) best = std::min(best, at((o.y - o.x) / (d.x - d.y)));    // o.x + t d.x == o.y + t d.y
+    if (d.x != -d.y) best = std::min(best, at(-(o.x + o.y) / (d.x + d.y)));  // o.x + t d.x == -(o.y + t d.y)
+    return best;
+}
+
+ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene& geometry)
+    : projection_(geometry.projection),
+      projection_exact_(geometry.projection),
+      width_(scene.settings.width),
+      height_(scene.settings.height),
+      near_(scene.camera.near),
+      far_(scene.camera.far) {
+    const glm::dmat4 view(geometry.view);
+    const size_t triangle_count = geometry.triangles.size();
+    triangles_.resize(triangle_count);
+    polygons_.resize(triangle_count);
+    screen_.reserve(triangle_count * 3);
+    edge_kinds_.reserve(triangle_count * 3);
+    const double snap = snap_displacement(scene.settings.snap_bits);
+
+    for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
+        const glm::dmat4 model(scene.meshes[mesh].model);
+        const glm::dmat4 model_view = view * model;
+        const glm::dmat4 view_magnitude_chain = absolute(view) * absolute(model);
+        const glm::dmat4 magnitude_chain = absolute(projection_exact_) * view_magnitude_chain;
+        const auto& positions = scene.meshes[mesh].data.positions;
+        const uint32_t first_triangle = geometry.mesh_first_triangle[mesh];
+        const uint32_t first_vertex = geometry.mesh_first_vertex[mesh];
+        const size_t mesh_triangles = scene.meshes[mesh].data.triangles.size();
+        for (uint32_t local = 0; local < mesh_triangles; ++local) {
+            const uint32_t id = first_triangle + local;
+            std::vector<ClipVertex> polygon(3);
+            glm::dvec3 view_vertex[3], oracle_error[3];
+            for (int k = 0; k < 3; ++k) {
+                const glm::dvec4 p(glm::dvec3(positions[geometry.triangles[id].v[k] - first_vertex]), 1.0);
+                const glm::dvec4 in_view = model_view * p;
+                view_vertex[k] = glm::dvec3(in_view);
+                oracle_error[k] = float_gamma(kOracleTransformRoundings) * glm::dvec3(view_magnitude_chain * glm::abs(p));
+                polygon[k].clip = projection_exact_ * in_view;
+                polygon[k].magnitudes = magnitude_chain * glm::abs(p);
+                polygon[k].error = vertex_error(polygon[k].magnitudes);
+                polygon[k].outgoing = EdgeKind::triangle;
+            }
+            triangles_[id] = {view_vertex[0],
+                              view_vertex[1] - view_vertex[0],
+                              view_vertex[2] - view_vertex[0],
+                              {oracle_error[0], oracle_error[1], oracle_error[2]}};
+            ReferencePolygon& out = polygons_[id];
+            const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
+            out.culled = scene.settings.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
+            if (scene.settings.cull_backfaces) {
+                const glm::dvec4 clip[3] = {polygon[0].clip, polygon[1].clip, polygon[2].clip};
+                const glm::dvec4 error[3] = {polygon[0].error, polygon[1].error, polygon[2].error};
+                out.facing_uncertain = facing_is_uncertain(clip, error);
+            }
+            out.first = static_cast<uint32_t>(screen_.size());
+            const std::vector<ClipVertex> original = polygon;
+            const bool unbounded = passes_by_the_eye(original, near_);
+            const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_);
+            out.count = static_cast<uint32_t>(clipped.size());
+            out.radius = snap;
+            for (const ClipVertex& v : clipped) {
+                screen_.push_back(screen_from_ndc(v.clip.x / v.clip.w, v.clip.y / v.clip.w, width_, height_));
+                edge_kinds_.push_back(v.outgoing);
+            }
+            // The bounds come from the clipped vertices; a triangle with nothing inside the view volume still gets
+            // them from its original vertices that float error may put in front of the near plane, for samples
+            // where a float clip kept a sliver. A vertex within its w error of the eye has no bounded screen
+            // position at all (screen_error is infinite), and then neither has anything about the triangle.
+            for (const ClipVertex& v : clipped.empty() ? original : clipped) {
+                if (clipped.empty() && !(v.clip.w + v.error.w >= near_)) continue;
+                const glm::dvec2 error = screen_error(v.clip, v.error, width_, height_);
+                out.radius = std::max(out.radius, snap + std::max(error.x, error.y));
+                out.depth_error = std::max(out.depth_error, v.error.w);
+                out.relative_depth_error = std::max(out.relative_depth_error, relative_depth_error(v.clip.w, v.error.w));
+                out.reversed_z_error = std::max(out.reversed_z_error, reversed_z_error(v.clip, v.error));
+            }
+            if (unbounded) out.radius = kInfinity;
+        }
+    }
+}
+
+std::span<const glm::dvec2> ReferenceGeometry::screen_vertices(uint32_t id) const {
+    const ReferencePolygon& p = polygons_[id];
+    return {screen_.data() + p.first, p.count};
+}
+
+ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
+    // Moeller-Trumbore from the eye (the view-space origin); the direction has z = -1, so t is the view depth.
+    const ViewTriangle& tri = triangles_[id];
+    const glm::dvec3 direction = view_ray_direction(projection_, ndc_from_screen(screen, width_, height_));
+    const glm::dvec3 p = glm::cross(direction, tri.edge2);
+    const double determinant = glm::dot(tri.edge1, p);
+    ExactHit hit;
+    if (determinant == 0.0 || !std::isfinite(determinant)) return hit;
+    const glm::dvec3 to_eye = -tri.a;
+    const glm::dvec3 q = glm::cross(to_eye, tri.edge1);
+    const double u = glm::dot(to_eye, p) / determinant;
+    const double v = glm::dot(direction, q) / determinant;
+    const double t = glm::dot(tri.edge2, q) / determinant;
+    if (!(t > 0.0)) return hit;
+    hit.valid = true;
+    hit.view_depth = t;
+    hit.reversed_z = (projection_exact_[2][2] * -t + projection_exact_[3][2]) / t;  // clip z / clip w at view z = -t
+    hit.bary = {1.0 - u - v, u, v};
+    return hit;
+}
+
+ReferenceGeometry::EmbreeRay ReferenceGeometry::embree_ray(uint32_t id, const glm::dvec2& screen) const {
+    const ViewTriangle& tri = triangles_[id];
+    return {{tri.a, tri.a + tri.edge1, tri.a + tri.edge2},
+            view_ray_direction(projection_, ndc_from_screen(screen, width_, height_)),
+            tri.oracle_error};
+}
+
+glm::dvec3 ReferenceGeometry::embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const {
+    const ExactHit exact = hit(id, screen);
+    if (!exact.valid) return glm::dvec3(std::numeric_limits<double>::infinity());
+    const EmbreeRay ray = embree_ray(id, screen);
+    return oracle::embree_barycentric_error(ray.vertices, ray.direction, exact.bary);
+}
+
+double ReferenceGeometry::embree_view_depth_error(uint32_t id, const glm::dvec2& screen) const {
+    return embree_view_depth_error(id, screen, hit(id, screen));
+}
+
+double ReferenceGeometry::embree_view_depth_error(uint32_t id, const glm::dvec2& screen, const ExactHit& exact) const {
+    if (!exact.valid) return std::numeric_limits<double>::infinity();
+    const EmbreeRay ray = embree_ray(id, screen);
+    return oracle::embree_view_depth_error(ray.vertices, ray.vertex_error, ray.direction, exact.view_depth);
+}
+
+double ReferenceGeometry::embree_reversed_z_error(uint32_t id, const glm::dvec2& screen) const {
+    const ExactHit exact = hit(id, screen);
+    const double error = embree_view_depth_error(id, screen, exact);
+    if (!(error < exact.view_depth)) return std::numeric_limits<double>::infinity();  // also: no valid hit
+    // |P32 / t' - P32 / t| for |t' - t| <= error.
+    return std::fabs(projection_exact_[3][2]) * error / (exact.view_depth * (exact.view_depth - error));
+}
+
+bool ReferenceGeometry::embree_may_cover(uint32_t id, const glm::dvec2& screen) const {
+    const EmbreeRay ray = embree_ray(id, screen);
+    return oracle::embree_may_cover(ray.vertices, ray.vertex_error, ray.direction);
+}
+
+SquareRange ReferenceGeometry::range_around(uint32_t id, const glm::dvec2& screen, double half_side) const {
+    SquareRange range;
+    if (!std::isfinite(half_side)) return range;
+    ExactHit corner[4];
+    for (int k = 0; k < 4; ++k) {
+        const glm::dvec2 c = screen + glm::dvec2(k & 1 ? half_side : -half_side, k & 2 ? half_side : -half_side);
+        corner[k] = hit(id, c);
+        if (!corner[k].valid) return range;  // behind the eye or parallel somewhere: unbounded
+    }
+    // All four in front: t = const / determinant with determinant affine in the screen point, so t > 0 at the four
+    // corners means the determinant keeps its sign over the square.
+    range.bounded = true;
+    range.min_view_depth = range.max_view_depth = corner[0].view_depth;
+    range.min_reversed_z = range.max_reversed_z = corner[0].reversed_z;
+    range.min_bary = range.max_bary = corner[0].bary;
+    for (int k = 1; k < 4; ++k) {
+        range.min_view_depth = std::min(range.min_view_depth, corner[k].view_depth);
+        range.max_view_depth = std::max(range.max_view_depth, corner[k].view_depth);
+        range.min_reversed_z = std::min(range.min_reversed_z, corner[k].reversed_z);
+        range.max_reversed_z = std::max(range.max_reversed_z, corner[k].reversed_z);
+        range.min_bary = glm::min(range.min_bary, corner[k].bary);
+        range.max_bary = glm::max(range.max_bary, corner[k].bary);
+    }
+    return range;
+}
+
+double ReferenceGeometry::boundary_distance(uint32_t id, const glm::dvec2& screen) const {
+    const std::span<const glm::dvec2> v = screen_vertices(id);
+    double best = kInfinity;
+    for (size_t i = 0; i < v.size(); ++i)
+        best = std::min(best, max_norm_distance_to_segment(screen, v[i], v[(i + 1) % v.size()]));
+    return best;
+}
+
+bool ReferenceGeometry::contains(uint32_t id, const glm::dvec2& screen) const {
+    const std::span<const glm::dvec2> v = screen_vertices(id);
+    if (v.size() < 3) return false;
+    // Convex polygon of either winding: inside when no edge has the point strictly on its outer side.
+    bool any_positive = false, any_negative = false;
+    for (size_t i = 0; i < v.size(); ++i) {
+        const double side = cross2(v[(i + 1) % v.size()] - v[i], screen - v[i]);
+        any_positive |= side > 0.0;
+        any_negative |= side < 0.0;
+    }
+    return !(any_positive && any_negative);
+}
+
+}  // namespace raster::oracle

@@ -1,0 +1,155 @@
+// The catalogue of speed/accuracy modes: one-axis variations of a scene's settings and three presets.
+#include "oracle/tradeoff/tradeoff_modes.h"
+
+#include <utility>
+
+namespace raster::oracle {
+namespace {
+
+TradeoffMode snap(int bits) {
+    return {"snap" + std::to_string(bits),
+            "vertices snapped to 1/" + std::to_string(1 << bits) + " px (" + std::to_string(bits) + " sub-pixel bits)",
+            [bits](RenderSettings& s) { s.snap_bits = bits; }};
+}
+
+TradeoffMode standard_samples(int samples) {
+    return {
+        "samples" + std::to_string(samples),
+        std::to_string(samples) + " sample" + (samples > 1 ? "s" : "") + " per pixel at the Vulkan standard positions",
+        [samples](RenderSettings& s) {
+            s.samples = samples;
+            s.pattern = SamplePattern::standard;
+        }};
+}
+
+// A preset: every axis set at once, whatever the scene asked for.
+TradeoffMode preset(std::string name, std::string description, int snap_bits, int samples, SamplePattern pattern,
+                    bool msaa, PrecisionModes precision) {
+    return {std::move(name), std::move(description), [=](RenderSettings& s) {
+                s.snap_bits = snap_bits;
+                s.samples = samples;
+                s.pattern = pattern;
+                s.msaa = msaa;
+                s.modes = precision;
+            }};
+}
+
+TradeoffMode grid(int side) {
+    const std::string n = std::to_string(side);
+    return {"grid" + n + "x" + n, n + "x" + n + " regular grid of samples per pixel", [side](RenderSettings& s) {
+                s.samples = side * side;
+                s.pattern = SamplePattern::grid;
+            }};
+}
+
+TradeoffMode msaa(int samples) {
+    return {"msaa" + std::to_string(samples),
+            std::to_string(samples) + " standard samples, shaded once per pixel per triangle (MSAA)",
+            [samples](RenderSettings& s) {
+                s.samples = samples;
+                s.pattern = SamplePattern::standard;
+                s.msaa = true;
+            }};
+}
+
+std::vector<TradeoffMode> make_catalogue() {
+    std::vector<TradeoffMode> modes;
+    modes.push_back({"baseline", "the scene's own settings", [](RenderSettings&) {}});
+    for (int bits : {4, 8, 12, 16}) modes.push_back(snap(bits));
+    modes.push_back({"edges-fixed", "exact 64-bit fixed-point edge functions (watertight)",
+                     [](RenderSettings& s) { s.modes.edges = EdgeArithmetic::fixed; }});
+    modes.push_back({"edges-float", "32-bit float edge functions",
+                     [](RenderSettings& s) { s.modes.edges = EdgeArithmetic::float32; }});
+    for (int samples : {1, 4, 8, 16}) modes.push_back(standard_samples(samples));
+    for (int side : {4, 8}) modes.push_back(grid(side));
+    for (int samples : {4, 16}) modes.push_back(msaa(samples));
+    modes.push_back({"perspective", "perspective-correct interpolation",
+                     [](RenderSettings& s) { s.modes.interpolation = Interpolation::perspective; }});
+    modes.push_back({"affine", "affine (screen-space) interpolation",
+                     [](RenderSettings& s) { s.modes.interpolation = Interpolation::affine; }});
+    modes.push_back({"depth-reversed-z", "reversed-Z float depth",
+                     [](RenderSettings& s) { s.modes.depth = DepthFormat::reversed_z; }});
+    modes.push_back({"depth-float", "float z/w depth, near 0 and far 1",
+                     [](RenderSettings& s) { s.modes.depth = DepthFormat::float_z; }});
+    modes.push_back({"depth-fixed24", "24-bit fixed-point z/w depth",
+                     [](RenderSettings& s) { s.modes.depth = DepthFormat::fixed24; }});
+    modes.push_back(
+        {"clip-full", "clipping against every plane", [](RenderSettings& s) { s.modes.clipping = Clipping::full; }});
+    modes.push_back({"guard-band", "near/far clipping only, a guard band instead of the side planes",
+                     [](RenderSettings& s) { s.modes.clipping = Clipping::guard_band; }});
+    modes.push_back({"hiz-on", "hierarchical-Z culling on", [](RenderSettings& s) { s.modes.hierarchical_z = true; }});
+    modes.push_back(
+        {"hiz-off", "hierarchical-Z culling off", [](RenderSettings& s) { s.modes.hierarchical_z = false; }});
+    modes.push_back(preset("fastest", "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band", 4, 1,
+                           SamplePattern::standard, false,
+                           {EdgeArithmetic::float32, Interpolation::affine, DepthFormat::fixed24,
+                            Clipping::guard_band, true}));
+    modes.push_back(preset("balanced", "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, guard band",
+                           8, 4, SamplePattern::standard, true,
+                           {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
+                            Clipping::guard_band, true}));
+    modes.push_back(preset("exact", "16 bits, fixed edges, 8x8 grid SSAA, perspective, reversed-Z, full clipping",
+                           16, 64, SamplePattern::grid, false,
+                           {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
+                            Clipping::full, true}));
+    return modes;
+}
+
+}  // namespace
+
+const std::vector<TradeoffMode>& tradeoff_modes() {
+    static const std::vector<TradeoffMode> catalogue = make_catalogue();
+    return catalogue;
+}
+
+const TradeoffMode* find_tradeoff_mode(const std::string& name) {
+    for (const TradeoffMode& mode : tradeoff_modes())
+        if (mode.name == name) return &mode;
+    return nullptr;
+}
+
+std::string tradeoff_mode_names() {
+    std::string names;
+    for (const TradeoffMode& mode : tradeoff_modes()) names += (names.empty() ? "" : ", ") + mode.name;
+    return names;
+}
+
+RenderSettings apply_mode(const TradeoffMode& mode, RenderSettings baseline) {
+    mode.apply(baseline);
+    return baseline;
+}
+
+bool same_mode_settings(const RenderSettings& a, const RenderSettings& b) {
+    return a.snap_bits == b.snap_bits && a.samples == b.samples && a.pattern == b.pattern && a.msaa == b.msaa &&
+           a.modes.edges == b.modes.edges && a.modes.interpolation == b.modes.interpolation &&
+           a.modes.depth == b.modes.depth && a.modes.clipping == b.modes.clipping &&
+           a.modes.hierarchical_z == b.modes.hierarchical_z;
+}
+
+std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline) {
+    std::vector<const TradeoffMode*> sweep;
+    std::vector<RenderSettings> seen;
+    for (const TradeoffMode& mode : tradeoff_modes()) {
+        const RenderSettings settings = apply_mode(mode, baseline);
+        bool duplicate = false;
+        for (const RenderSettings& other : seen) duplicate = duplicate || same_mode_settings(settings, other);
+        if (duplicate) continue;
+        sweep.push_back(&mode);
+        seen.push_back(settings);
+    }
+    return sweep;
+}
+
+nlohmann::json mode_settings_json(const RenderSettings& s) {
+    return {{"snap_bits", s.snap_bits},
+            {"edges", to_string(s.modes.edges)},
+            {"samples", s.samples},
+            {"pattern", to_string(s.pattern)},
+            {"msaa", s.msaa},
+            {"interpolation", to_string(s.modes.interpolation)},
+            {"depth", to_string(s.modes.depth)},
+            {"clipping", to_string(s.modes.clipping)},
+            {"hierarchical_z", s.modes.hierarchical_z}};
+}
+
+}  // namespace raster::oracle

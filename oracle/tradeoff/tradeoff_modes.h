@@ -1,0 +1,46 @@
+// The speed/accuracy modes `raster tradeoff` sweeps: each a stable short name for one change to a scene's render
+// settings (sub-pixel bits, edge arithmetic, samples and pattern, MSAA, interpolation, depth format, clipping,
+// hierarchical Z), or a named preset that sets all of them.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "raster/scene/scene.h"
+
+namespace raster::oracle {
+
+struct TradeoffMode {
+    std::string name;         // e.g. "baseline", "snap4", "edges-float", "grid8x8", "affine", "fastest"
+    std::string description;  // one line, for --list-modes and the JSON
+    std::function<void(RenderSettings&)> apply;  // the change, made to the scene's own settings
+};
+
+// Every mode, in the default sweep's order: "baseline" (the scene's own settings), then the one-axis variations
+// grouped by axis, then the presets "fastest", "balanced" and "exact".
+const std::vector<TradeoffMode>& tradeoff_modes();
+
+// The mode called `name`, or nullptr.
+const TradeoffMode* find_tradeoff_mode(const std::string& name);
+
+// Every name, comma-separated, for messages.
+std::string tradeoff_mode_names();
+
+// `baseline` with the mode applied.
+RenderSettings apply_mode(const TradeoffMode& mode, RenderSettings baseline);
+
+// True when a and b agree on every field a mode can change (snap bits, samples, pattern, MSAA, PrecisionModes).
+bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
+
+// The default sweep for a scene: every mode in catalogue order, leaving out each whose settings equal those of a
+// mode already in the list (snap8 when the scene already snaps to 8 bits, samples1 when it has 1 sample, ...), so
+// every point of the plot is a distinct configuration.
+std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline);
+
+// {snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z}
+nlohmann::json mode_settings_json(const RenderSettings& settings);
+
+}  // namespace raster::oracle

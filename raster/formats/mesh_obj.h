@@ -1,0 +1,22 @@
+// Wavefront OBJ meshes through tinyobjloader: objects, normals and vertex colours, polygons triangulated.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "raster/scene/mesh.h"
+
+namespace raster {
+
+// Parses OBJ text; `name` is used in error messages only. Every object (`o`/`g`) of the file is kept, in order,
+// in one MeshData with object_names / object_first_triangle marking where each starts. Normals are kept when
+// every face corner has one; vertex colours (`v x y z r g b`) when every vertex has one. Materials (mtllib) and
+// texture coordinates are not read: no stage uses them. Throws InputError on malformed input, indices out of
+// range, non-finite coordinates or sizes over the limits in mesh.h.
+MeshData parse_obj(std::string_view text, const std::string& name);
+
+// Reads and parses an OBJ file (at most 2 GiB). Throws InputError naming the file.
+MeshData load_obj(const std::filesystem::path& path);
+
+}  // namespace raster

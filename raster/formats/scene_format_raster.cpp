@@ -1,0 +1,279 @@
+// The project's own scene format (YAML; README "Scene format"): every field optional except what a scene needs.
+#include <glm/geometric.hpp>
+
+#include "raster/scene/validation.h"
+#include "raster/scene/sample_counts.h"
+#include "raster/formats/scene_formats.h"
+#include "raster/core/transform.h"
+
+namespace raster {
+
+glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader) {
+    reader.expect_sequence(list, "transform");
+    glm::mat4 model(1.0f);
+    for (const YAML::Node& step : list) {
+        if (!step.IsMap() || step.size() != 1)
+            reader.fail(step, "each transform step is a map with one key: translate, rotate, quaternion, scale or lookat");
+        reader.check_keys(step, {"translate", "rotate", "quaternion", "scale", "lookat"});
+        const std::string kind = step.begin()->first.Scalar();
+        const YAML::Node value = step.begin()->second;
+        glm::mat4 matrix(1.0f);
+        if (kind == "translate") {
+            matrix = translate_matrix(reader.vec3(value, "translate"));
+        } else if (kind == "scale") {
+            matrix = scale_matrix(reader.vec3(value, "scale", true));
+        } else if (kind == "rotate") {
+            // {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]
+            float angle;
+            glm::vec3 axis;
+            if (value.IsMap()) {
+                reader.check_keys(value, {"angle", "axis"});
+                angle = reader.finite_float(reader.required(value, "angle"), "rotate angle");
+                axis = reader.vec3(reader.required(value, "axis"), "rotate axis");
+            } else {
+                if (!value.IsSequence() || value.size() != 4)
+                    reader.fail(value, "rotate is {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]");
+                angle = reader.finite_float(value[0], "rotate angle");
+                axis = {reader.finite_float(value[1], "rotate axis"), reader.finite_float(value[2], "rotate axis"),
+                        reader.finite_float(value[3], "rotate axis")};
+            }
+            if (!(glm::length(axis) > 0.0f)) reader.fail(value, "rotate axis must not be zero");
+            matrix = rotate_matrix(angle, axis);
+        } else if (kind == "quaternion") {
+            if (!value.IsSequence() || value.size() != 4) reader.fail(value, "quaternion is [w, x, y, z]");
+            const float w = reader.finite_float(value[0], "quaternion"), x = reader.finite_float(value[1], "quaternion"),
+                        y = reader.finite_float(value[2], "quaternion"), z = reader.finite_float(value[3], "quaternion");
+            if (!(w * w + x * x + y * y + z * z > 0.0f)) reader.fail(value, "quaternion must not be zero");
+            matrix = quaternion_matrix(w, x, y, z);
+        } else {  // lookat: place the object at `eye`, facing `target` with its -z axis
+            reader.expect_map(value, "lookat");
+            reader.check_keys(value, {"eye", "target", "up"});
+            Camera frame;
+            frame.eye = reader.vec3(reader.required(value, "eye"), "lookat eye");
+            frame.target = reader.vec3(reader.required(value, "target"), "lookat target");
+            if (YAML::Node up = reader.optional(value, "up"); up.IsDefined()) frame.up = reader.vec3(up, "lookat up");
+            if (const auto problem = camera_problem(frame))
+                reader.fail(value, "lookat: " + problem->message.substr(problem->message.find(' ') + 1));
+            matrix = look_at_model_matrix(frame.eye, frame.target, frame.up);
+        }
+        model = matrix * model;
+    }
+    return model;
+}
+
+YAML::Node camera_node_to_blame(const CameraNodes& nodes, CameraField field) {
+    auto first_defined = [&](const YAML::Node& value, const YAML::Node& relative_to) {
+        return value.IsDefined() ? value : relative_to.IsDefined() ? relative_to : nodes.map;
+    };
+    switch (field) {
+        case CameraField::eye: return first_defined(nodes.eye, nodes.map);
+        case CameraField::target: return first_defined(nodes.target, nodes.eye);
+        case CameraField::up: return first_defined(nodes.up, nodes.eye);
+        case CameraField::fov: return first_defined(nodes.fov, nodes.map);
+        case CameraField::near: return first_defined(nodes.near, nodes.map);
+        case CameraField::far: return first_defined(nodes.far, nodes.near);
+    }
+    return nodes.map;
+}
+
+namespace {
+
+glm::vec3 read_color(const YAML::Node& node, const YamlReader& reader, const char* what) {
+    return reader.vec3(node, what, true);
+}
+
+void read_image(const YAML::Node& node, const YamlReader& reader, RenderSettings& settings) {
+    reader.expect_map(node, "image");
+    reader.check_keys(node, {"width", "height", "background"});
+    if (YAML::Node v = reader.optional(node, "width"); v.IsDefined())
+        settings.width = reader.integer(v, "image width", 1, kMaxImageDimension);
+    if (YAML::Node v = reader.optional(node, "height"); v.IsDefined())
+        settings.height = reader.integer(v, "image height", 1, kMaxImageDimension);
+    if (YAML::Node v = reader.optional(node, "background"); v.IsDefined())
+        settings.background = read_color(v, reader, "background");
+}
+
+void read_camera(const YAML::Node& node, const YamlReader& reader, Camera& camera) {
+    reader.expect_map(node, "camera");
+    reader.check_keys(node, {"eye", "target", "up", "fov", "near", "far"});
+    const YAML::Node eye = reader.optional(node, "eye"), target = reader.optional(node, "target"),
+                     up = reader.optional(node, "up"), fov = reader.optional(node, "fov"),
+                     near = reader.optional(node, "near"), far = reader.optional(node, "far");
+    if (eye.IsDefined()) camera.eye = reader.vec3(eye, "camera eye");
+    if (target.IsDefined()) camera.target = reader.vec3(target, "camera target");
+    if (up.IsDefined()) camera.up = reader.vec3(up, "camera up");
+    if (fov.IsDefined()) camera.fov_y_degrees = reader.finite_float(fov, "camera fov");
+    if (near.IsDefined()) camera.near = reader.finite_float(near, "camera near");
+    if (far.IsDefined()) camera.far = reader.finite_float(far, "camera far");
+    if (const auto problem = camera_problem(camera))
+        reader.fail(camera_node_to_blame({node, eye, target, up, fov, near, far}, problem->field), problem->message);
+}
+
+void read_render(const YAML::Node& node, const YamlReader& reader, RenderSettings& settings) {
+    reader.expect_map(node, "render");
+    reader.check_keys(node, {"samples", "pattern", "msaa", "shading", "cull", "snap_bits", "ambient", "edges",
+                             "interpolation", "depth", "clipping", "hierarchical_z"});
+    if (YAML::Node v = reader.optional(node, "samples"); v.IsDefined())
+        settings.samples = reader.integer(v, "samples", 1, 256);
+    if (YAML::Node v = reader.optional(node, "pattern"); v.IsDefined()) {
+        if (!parse_sample_pattern(reader.string(v, "pattern"), settings.pattern))
+            reader.fail(v, "pattern must be 'standard' or 'grid'");
+    }
+    if (YAML::Node v = reader.optional(node, "msaa"); v.IsDefined()) settings.msaa = reader.boolean(v, "msaa");
+    if (YAML::Node v = reader.optional(node, "shading"); v.IsDefined()) {
+        if (!parse_shading_mode(reader.string(v, "shading"), settings.shading))
+            reader.fail(v, "shading must be unlit, flat, gouraud, phong or blinn-phong");
+    }
+    if (YAML::Node v = reader.optional(node, "cull"); v.IsDefined()) {
+        const std::string cull = reader.string(v, "cull");
+        if (cull != "none" && cull != "back") reader.fail(v, "cull must be 'none' or 'back'");
+        settings.cull_backfaces = cull == "back";
+    }
+    if (YAML::Node v = reader.optional(node, "snap_bits"); v.IsDefined())
+        settings.snap_bits = reader.integer(v, "snap_bits", kMinSnapBits, kMaxSnapBits);
+    if (YAML::Node v = reader.optional(node, "ambient"); v.IsDefined())
+        settings.ambient_light = read_color(v, reader, "render ambient");
+    // A precision mode: an optional key naming one of the values its parse function knows.
+    auto read_mode = [&](const char* key, auto parse, auto names, auto& out) {
+        if (YAML::Node v = reader.optional(node, key); v.IsDefined()) {
+            if (!parse(reader.string(v, key), out)) reader.fail(v, std::string(key) + " must be one of " + names());
+        }
+    };
+    PrecisionModes& modes = settings.modes;
+    read_mode("edges", parse_edge_arithmetic, edge_arithmetic_names, modes.edges);
+    read_mode("interpolation", parse_interpolation, interpolation_names, modes.interpolation);
+    read_mode("depth", parse_depth_format, depth_format_names, modes.depth);
+    read_mode("clipping", parse_clipping, clipping_names, modes.clipping);
+    if (YAML::Node v = reader.optional(node, "hierarchical_z"); v.IsDefined())
+        modes.hierarchical_z = reader.boolean(v, "hierarchical_z");
+}
+
+// The image size, sample count and frame memory together, once both sections are read, at the value to change.
+void check_settings(const YAML::Node& root, const YamlReader& reader, const RenderSettings& settings) {
+    const std::string problem = settings_problem(settings);
+    if (problem.empty()) return;
+    const YAML::Node image = reader.optional(root, "image"), render = reader.optional(root, "render");
+    const YAML::Node samples = render.IsDefined() ? reader.optional(render, "samples") : render;
+    const YAML::Node pattern = render.IsDefined() ? reader.optional(render, "pattern") : render;
+    if (!sample_count_error(settings.samples, settings.pattern).empty())
+        reader.fail(samples.IsDefined() ? samples : pattern.IsDefined() ? pattern : root, problem);
+    if (samples.IsDefined() && settings.samples > 1) reader.fail(samples, problem);  // the multiplier of the frame
+    reader.fail(image.IsDefined() ? image : root, problem);
+}
+
+Light read_light(const YAML::Node& node, const YamlReader& reader) {
+    reader.expect_map(node, "a light");
+    reader.check_keys(node, {"position", "color", "intensity", "attenuation"});
+    Light light;
+    light.position = reader.vec3(reader.required(node, "position"), "light position");
+    if (YAML::Node v = reader.optional(node, "color"); v.IsDefined()) light.color = read_color(v, reader, "light color");
+    if (YAML::Node v = reader.optional(node, "intensity"); v.IsDefined())
+        light.intensity = reader.finite_float(v, "light intensity");
+    if (YAML::Node v = reader.optional(node, "attenuation"); v.IsDefined())
+        light.attenuate = reader.boolean(v, "light attenuation");
+    return light;
+}
+
+Material read_material(const YAML::Node& node, const YamlReader& reader) {
+    reader.expect_map(node, "material");
+    reader.check_keys(node, {"color", "ambient", "diffuse", "specular", "exponent"});
+    Material material;
+    if (YAML::Node v = reader.optional(node, "color"); v.IsDefined()) material.color = read_color(v, reader, "material color");
+    if (YAML::Node v = reader.optional(node, "ambient"); v.IsDefined()) material.ambient = read_color(v, reader, "ambient");
+    if (YAML::Node v = reader.optional(node, "diffuse"); v.IsDefined()) material.diffuse = read_color(v, reader, "diffuse");
+    if (YAML::Node v = reader.optional(node, "specular"); v.IsDefined()) material.specular = read_color(v, reader, "specular");
+    if (YAML::Node v = reader.optional(node, "exponent"); v.IsDefined()) {
+        material.exponent = reader.finite_float(v, "exponent");
+        if (material.exponent < 0.0f) reader.fail(v, "exponent must be >= 0");
+    }
+    return material;
+}
+
+// Inline geometry: vertices, faces (triangles or polygons, fan-triangulated) and optional per-vertex normals,
+// vertex colours or face colours.
+MeshData read_inline_mesh(const YAML::Node& node, const YamlReader& reader) {
+    MeshData mesh;
+    const YAML::Node vertices = reader.required(node, "vertices");
+    reader.expect_sequence(vertices, "vertices");
+    if (vertices.size() > kMaxMeshVertices) reader.fail(vertices, "too many vertices");
+    for (const YAML::Node& v : vertices) mesh.positions.push_back(reader.vec3(v, "a vertex"));
+    const YAML::Node faces = reader.required(node, "faces");
+    reader.expect_sequence(faces, "faces");
+    std::vector<size_t> face_first_triangle;
+    for (const YAML::Node& face : faces) {
+        if (!face.IsSequence() || face.size() < 3 || face.size() > kMaxPolygonVertices)
+            reader.fail(face, "a face is a list of 3 or more vertex indices");
+        std::vector<uint32_t> corners;
+        for (const YAML::Node& index : face)
+            corners.push_back(static_cast<uint32_t>(
+                reader.integer(index, "a face index", 0, static_cast<int>(mesh.positions.size()) - 1)));
+        face_first_triangle.push_back(mesh.triangles.size());
+        for (size_t k = 1; k + 1 < corners.size(); ++k) mesh.triangles.push_back({{corners[0], corners[k], corners[k + 1]}});
+        if (mesh.triangles.size() > kMaxMeshTriangles) reader.fail(face, "too many triangles");
+    }
+    // Colours may be a single number for grey (README "Scene format"); normals may not.
+    auto per_vertex = [&](const char* key, std::vector<glm::vec3>& out, bool grey_ok) {
+        const YAML::Node list = reader.optional(node, key);
+        if (!list.IsDefined()) return;
+        reader.expect_sequence(list, key);
+        if (list.size() != mesh.positions.size())
+            reader.fail(list, std::string(key) + " must have one entry per vertex (" +
+                                  std::to_string(mesh.positions.size()) + "), has " + std::to_string(list.size()));
+        for (const YAML::Node& v : list) out.push_back(reader.vec3(v, key, grey_ok));
+    };
+    per_vertex("normals", mesh.normals, false);
+    per_vertex("vertex_colors", mesh.colors, true);
+    if (const YAML::Node list = reader.optional(node, "face_colors"); list.IsDefined()) {
+        reader.expect_sequence(list, "face_colors");
+        if (list.size() != faces.size())
+            reader.fail(list, "face_colors must have one entry per face (" + std::to_string(faces.size()) + "), has " +
+                                  std::to_string(list.size()));
+        for (size_t face = 0; face < faces.size(); ++face) {
+            const glm::vec3 color = read_color(list[face], reader, "a face colour");
+            const size_t end = face + 1 < faces.size() ? face_first_triangle[face + 1] : mesh.triangles.size();
+            for (size_t t = face_first_triangle[face]; t < end; ++t) mesh.face_colors.push_back(color);
+        }
+    }
+    mesh.object_names.push_back("inline");
+    mesh.object_first_triangle.push_back(0);
+    return mesh;
+}
+
+SceneMesh read_mesh(const YAML::Node& node, const YamlReader& reader, const MeshFileLoader& load_mesh) {
+    reader.expect_map(node, "a mesh");
+    reader.check_keys(node, {"file", "vertices", "faces", "normals", "vertex_colors", "face_colors", "transform",
+                             "material"});
+    SceneMesh mesh;
+    const YAML::Node file = reader.optional(node, "file");
+    if (file.IsDefined() == reader.optional(node, "vertices").IsDefined())
+        reader.fail(node, "a mesh has either 'file' or inline 'vertices' and 'faces'");
+    if (file.IsDefined()) {
+        mesh.source = reader.string(file, "file");
+        mesh.data = load_mesh(file, mesh.source);
+    } else {
+        mesh.source = reader.file() + ":" + std::to_string(node.Mark().line + 1) + " (inline mesh)";
+        mesh.data = read_inline_mesh(node, reader);
+    }
+    if (YAML::Node v = reader.optional(node, "transform"); v.IsDefined()) mesh.model = read_transform_chain(v, reader);
+    if (YAML::Node v = reader.optional(node, "material"); v.IsDefined()) mesh.material = read_material(v, reader);
+    return mesh;
+}
+
+}  // namespace
+
+void read_raster_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
+    reader.check_keys(root, {"image", "camera", "render", "lights", "meshes"});
+    if (YAML::Node v = reader.optional(root, "image"); v.IsDefined()) read_image(v, reader, scene.settings);
+    if (YAML::Node v = reader.optional(root, "render"); v.IsDefined()) read_render(v, reader, scene.settings);
+    check_settings(root, reader, scene.settings);
+    if (YAML::Node v = reader.optional(root, "camera"); v.IsDefined()) read_camera(v, reader, scene.camera);
+    if (YAML::Node v = reader.optional(root, "lights"); v.IsDefined()) {
+        reader.expect_sequence(v, "lights");
+        for (const YAML::Node& light : v) scene.lights.push_back(read_light(light, reader));
+    }
+    const YAML::Node meshes = reader.required(root, "meshes");
+    reader.expect_sequence(meshes, "meshes");
+    for (const YAML::Node& mesh : meshes) scene.meshes.push_back(read_mesh(mesh, reader, load_mesh));
+}
+
+}  // namespace raster

@@ -1,0 +1,89 @@
+// Loading scenes: reads the file, tells the format apart by content, loads each mesh file once, validates.
+#include "raster/formats/scene_loader.h"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+
+#include "raster/core/errors.h"
+#include "raster/core/file_io.h"
+#include "raster/formats/mesh_obj.h"
+#include "raster/formats/mesh_ply.h"
+#include "raster/scene/validation.h"
+#include "raster/formats/scene_formats.h"
+#include "raster/formats/yaml_reader.h"
+
+namespace raster {
+
+const char* to_string(SceneFormat format) {
+    switch (format) {
+        case SceneFormat::raster: return "raster";
+        case SceneFormat::seed003: return "seed003";
+        case SceneFormat::seed000: return "seed000";
+        case SceneFormat::seed001: return "seed001";
+    }
+    return "?";
+}
+
+namespace {
+
+SceneFormat detect_format(const YAML::Node& root, const YamlReader& reader) {
+    auto has = [&](const char* key) { return reader.optional(root, key).IsDefined(); };
+    if (has("task")) return SceneFormat::seed000;
+    if (has("camera") && has("objects")) return SceneFormat::seed001;
+    if (has("fov_angle") || has("lookat")) return SceneFormat::seed003;
+    return SceneFormat::raster;
+}
+
+}  // namespace
+
+MeshData load_mesh_file(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (extension == ".obj") return load_obj(path);
+    if (extension == ".ply") return load_ply(path);
+    throw InputError(path.string(), 0, 0, "unknown mesh format '" + extension + "' (expected .obj or .ply)");
+}
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& path, SceneFormat* format) {
+    const std::string name = path.string();
+    const YAML::Node root = parse_document(text, name);
+    const YamlReader reader(name);
+    if (!root.IsDefined() || root.IsNull()) throw InputError(name, 1, 1, "the scene file is empty");
+    reader.expect_map(root, "a scene");
+
+    std::map<std::string, std::unique_ptr<MeshData>> meshes;
+    const MeshFileLoader load_mesh = [&](const YAML::Node& where, const std::string& file) -> const MeshData& {
+        std::filesystem::path mesh_path(file);
+        if (mesh_path.is_relative()) mesh_path = path.parent_path() / mesh_path;
+        auto& slot = meshes[mesh_path.lexically_normal().string()];
+        if (!slot) {
+            try {
+                slot = std::make_unique<MeshData>(load_mesh_file(mesh_path));
+            } catch (const InputError& error) {
+                // Say where the scene asked for the mesh, and what is wrong inside it.
+                reader.fail(where, "in mesh '" + file + "': " + error.what());
+            }
+        }
+        return *slot;
+    };
+
+    Scene scene;
+    scene.path = name;
+    const SceneFormat detected = detect_format(root, reader);
+    switch (detected) {
+        case SceneFormat::raster: read_raster_scene(root, reader, load_mesh, scene); break;
+        case SceneFormat::seed003: read_seed003_scene(root, reader, load_mesh, scene); break;
+        case SceneFormat::seed000: read_seed000_scene(root, reader, load_mesh, scene); break;
+        case SceneFormat::seed001: read_seed001_scene(root, reader, load_mesh, scene); break;
+    }
+    validate_scene(scene);
+    if (format) *format = detected;
+    return scene;
+}
+
+Scene load_scene(const std::filesystem::path& path, SceneFormat* format) {
+    return parse_scene(read_file_bytes(path, kMaxSceneFileBytes), path, format);
+}
+
+}  // namespace raster

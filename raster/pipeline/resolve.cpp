@@ -1,0 +1,95 @@
+// Resolve: per-pixel shading of the visibility buffer (SSAA or MSAA), sample averaging and depth visualisation.
+#include "raster/pipeline/resolve.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "raster/core/parallel.h"
+
+namespace raster {
+
+PixelResolver::PixelResolver(const Shader& shader, const ResolveParams& params, int samples)
+    : shader_(shader), params_(params), samples_(samples) {
+    for (int c = 0; c < 3; ++c) background_[c] = to_byte(params.background[c]);
+    background_[3] = 0;
+}
+
+void PixelResolver::one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const {
+    const glm::vec3 color = shader_.shade(triangle, bary);
+    for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
+    if (params_.alpha) out[3] = 255;
+}
+
+void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const {
+    // A pixel whose samples all show the same triangle (or nothing) is the common case: one shade, no search.
+    bool uniform = true;
+    for (int s = 1; s < samples_ && uniform; ++s) uniform = triangle[s] == triangle[0];
+    if (uniform && triangle[0] == kNoTriangle) return background(out);
+    if (uniform && (params_.msaa || samples_ == 1)) return one_triangle(triangle[0], bary[0], out);
+    glm::vec3 sum(0.0f);
+    int covered = 0;
+    for (int s = 0; s < samples_; ++s) {
+        if (triangle[s] == kNoTriangle) continue;
+        ++covered;
+        if (!params_.msaa) {
+            sum += shader_.shade(triangle[s], bary[s]);
+            continue;
+        }
+        // MSAA: only the first sample of each triangle shades, for all of that triangle's samples.
+        bool seen = false;
+        for (int earlier = 0; earlier < s && !seen; ++earlier) seen = triangle[earlier] == triangle[s];
+        if (seen) continue;
+        int count = 1;
+        for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
+        sum += static_cast<float>(count) * shader_.shade(triangle[s], bary[s]);
+    }
+    if (covered == 0) return background(out);
+    glm::vec3 color;
+    if (params_.alpha) color = sum / static_cast<float>(covered);
+    else color = (sum + static_cast<float>(samples_ - covered) * params_.background) / static_cast<float>(samples_);
+    for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
+    if (params_.alpha) out[3] = to_byte(static_cast<float>(covered) / static_cast<float>(samples_));
+}
+
+void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image) {
+    const PixelResolver resolver(shader, params, visibility.samples);
+    image.width = visibility.width;
+    image.height = visibility.height;
+    image.channels = resolver.channels();
+    image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
+    parallel_for(static_cast<size_t>(visibility.height), params.threads, [&](size_t row) {
+        const int y = static_cast<int>(row);
+        for (int x = 0; x < visibility.width; ++x) {
+            const size_t first = visibility.index(x, y, 0);
+            resolver.resolve(&visibility.triangle[first], &visibility.bary[first], image.at(x, y));
+        }
+    });
+}
+
+Image depth_image(const VisibilityBuffer& visibility) {
+    Image image(visibility.width, visibility.height, 1);
+    std::vector<float> nearest(static_cast<size_t>(visibility.width) * visibility.height,
+                               std::numeric_limits<float>::infinity());
+    float lo = std::numeric_limits<float>::infinity(), hi = 0.0f;
+    for (int y = 0; y < visibility.height; ++y)
+        for (int x = 0; x < visibility.width; ++x)
+            for (int s = 0; s < visibility.samples; ++s) {
+                const size_t at = visibility.index(x, y, s);
+                if (visibility.triangle[at] == kNoTriangle) continue;
+                float& pixel = nearest[static_cast<size_t>(y) * visibility.width + x];
+                pixel = std::min(pixel, visibility.view_depth[at]);
+                lo = std::min(lo, visibility.view_depth[at]);
+                hi = std::max(hi, visibility.view_depth[at]);
+            }
+    const float range = hi > lo ? hi - lo : 1.0f;
+    for (int y = 0; y < visibility.height; ++y)
+        for (int x = 0; x < visibility.width; ++x) {
+            const float depth = nearest[static_cast<size_t>(y) * visibility.width + x];
+            if (depth == std::numeric_limits<float>::infinity()) continue;
+            const float t = (depth - lo) / range;  // 0 nearest, 1 farthest
+            image.at(x, y)[0] = static_cast<uint8_t>(std::lround(255.0f - t * (255.0f - 32.0f)));
+        }
+    return image;
+}
+
+}  // namespace raster

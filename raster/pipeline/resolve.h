@@ -1,0 +1,51 @@
+// Resolve: shades a visibility buffer (SSAA: every sample; MSAA: once per pixel per triangle) and averages the
+// samples of each pixel into an 8-bit image. Also turns view depth into a greyscale image.
+#pragma once
+
+#include <algorithm>
+
+#include <glm/vec3.hpp>
+
+#include "raster/image/image.h"
+#include "raster/pipeline/shade.h"
+#include "raster/pipeline/visibility_buffer.h"
+
+namespace raster {
+
+struct ResolveParams {
+    bool msaa = false;
+    glm::vec3 background{0.0f};
+    bool alpha = false;  // RGBA with alpha = covered fraction; RGB is then the mean of the covered samples only
+    int threads = 0;
+};
+
+// Colours single pixels from their samples: shared by the full-frame resolve and the tiled renderer.
+class PixelResolver {
+public:
+    PixelResolver(const Shader& shader, const ResolveParams& params, int samples);
+    int channels() const { return params_.alpha ? 4 : 3; }
+    // `triangle` and `bary` hold the pixel's `samples` entries in pattern order; writes channels() bytes to out.
+    void resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const;
+    // The two cases resolve() answers without looking at every sample: no sample covered, and (with MSAA or one
+    // sample) every sample on one triangle, shaded once at `bary`, the pattern's first sample.
+    void background(uint8_t* out) const { std::copy(background_, background_ + channels(), out); }
+    void one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const;
+
+private:
+    const Shader& shader_;
+    ResolveParams params_;
+    int samples_;
+    uint8_t background_[4];
+};
+
+// The colour image. Uncovered samples take the background colour (or, with alpha, no part in the colour).
+// MSAA shades each triangle in a pixel once, at the first of its samples in pattern order (always inside the
+// triangle, so no extrapolation), weighted by how many samples it covers.
+// `image` is resized (its storage reused when it fits) and every pixel written.
+void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image);
+
+// Greyscale depth: per pixel the nearest covered sample's view depth, mapped linearly so that the nearest depth
+// in the image is white (255) and the farthest is 32; pixels with no coverage are black.
+Image depth_image(const VisibilityBuffer& visibility);
+
+}  // namespace raster

@@ -1,0 +1,73 @@
+// Setup: clipped polygon -> fixed-point triangles with edge functions, fill-rule bias and a clamped bounding box.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "raster/pipeline/clip.h"
+#include "raster/scene/precision_modes.h"
+#include "raster/scene/scene.h"
+
+namespace raster {
+
+// Where setup puts things: the image size and the fixed-point precision (see conventions.h).
+struct SetupParams {
+    int width = 0;
+    int height = 0;
+    int snap_bits = 8;
+    double side = 1.0;  // the clip volume's side factor: vertices are kept within it (guard band), see conventions.h
+    EdgeArithmetic edges = EdgeArithmetic::fixed;
+    Interpolation interpolation = Interpolation::perspective;
+    DepthFormat depth = DepthFormat::reversed_z;
+};
+
+// One screen-space triangle, ready to rasterize. Coordinates are on the grid of 1/2^fixed_bits pixel.
+// Edge i is the edge opposite vertex i; E_i(X, Y) = a[i] * X + b[i] * Y + c[i] is > 0 inside, and equals
+// area2 at vertex i, so E_i / area2 is vertex i's screen-space barycentric coordinate.
+// A sample is covered when E_i + bias[i] >= 0 for all i (bias 0 on top-left edges, -1 elsewhere).
+struct TriangleSetup {
+    uint32_t triangle_id = 0;    // the original scene triangle
+    int64_t x[3] = {}, y[3] = {};  // snapped vertices, wound so that E > 0 inside
+    int64_t a[3] = {}, b[3] = {}, c[3] = {};
+    int64_t bias[3] = {};
+    int64_t area2 = 0;           // twice the snapped area, > 0
+    int min_x = 0, min_y = 0, max_x = -1, max_y = -1;  // pixel bounding box, inclusive, inside the viewport
+    double depth[3] = {};        // the depth test's key at each vertex, larger is nearer (depth_key)
+    float inv_w[3] = {};         // 1 / view depth at each vertex
+    glm::vec3 bary[3];           // each vertex's barycentric coordinates in the original triangle
+    bool affine = false;         // Interpolation::affine: barycentrics linear in screen space
+    bool depth_fixed24 = false;  // DepthFormat::fixed24: the interpolated key is rounded to an integer
+};
+
+// The depth test's key for reversed-Z depth d = z/w (near 1, far 0), in `format`; larger is always nearer, so
+// every path keeps one comparison:
+//   reversed_z  d rounded to float;
+//   float_z     -(1 - d) rounded to float (OpenGL-style z in [0, 1], negated);
+//   fixed24     -(1 - d) (2^24 - 1), not rounded: the interpolated value is rounded to an integer per sample.
+inline constexpr double kFixed24Levels = 16777215.0;
+double depth_key(double reversed_z, DepthFormat format);
+
+// Setup's parameters for a scene's settings (image, snap bits, modes, the guard band factor when it clips so).
+SetupParams setup_params_for(const RenderSettings& settings);
+// The clip volume for a camera and settings (near, far, and the side factor of the clipping mode).
+ClipVolume clip_volume_for(const Camera& camera, const RenderSettings& settings);
+
+// Projects, snaps and triangulates a clipped polygon (as a fan from its first vertex), appending one setup per
+// non-degenerate triangle to `out` (back-face culling is faces_front's, before clipping). Returns the number appended.
+int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const SetupParams& params,
+                  std::vector<TriangleSetup>& out);
+
+// Back-face culling is decided once per scene triangle, before clipping, from its clip-space vertices: the sign of
+// det[x y w] (rows a, b, c) is that of the triangle's NDC area, and stays that of every part of it in front of the
+// eye (clipped vertices are positive-winding combinations of a, b, c). > 0 is front-facing (counter-clockwise in
+// NDC, see conventions.h). Deciding after snapping, per fan piece, would let a thin piece of a front face flip.
+// Computed in double from float inputs: each 2x2 product is exact, so only 4 roundings remain.
+bool faces_front(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c);
+
+// True when the directed edge (dx, dy) is a top or left edge for a triangle with E > 0 inside (y down).
+inline bool is_top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
+
+}  // namespace raster

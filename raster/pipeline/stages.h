@@ -1,0 +1,31 @@
+// The rasterizer's stage seams: each stage as a replaceable function, so tests can run the real pipeline with
+// one faulty stage (the bug catalogue's mutants) without any switch in production code.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "raster/pipeline/clip.h"
+#include "raster/pipeline/reference_rasterizer.h"
+#include "raster/pipeline/sample_pattern.h"
+#include "raster/pipeline/setup.h"
+#include "raster/pipeline/shade.h"
+#include "raster/pipeline/vertex_stage.h"
+
+namespace raster {
+
+// The stages render() runs, defaulting to the real ones. A test replaces one to see which checks notice.
+struct PipelineStages {
+    TransformedScene (*vertex)(const Scene&, const VertexStageNeeds&) = run_vertex_stage;  // camera matrices
+    bool (*faces_front)(const glm::vec4&, const glm::vec4&, const glm::vec4&) = raster::faces_front;  // culling
+    ClippedPolygon (*clip)(const glm::vec4&, const glm::vec4&, const glm::vec4&, const ClipVolume&) = clip_triangle;
+    int (*setup)(const ClippedPolygon&, uint32_t, const SetupParams&, std::vector<TriangleSetup>&) = setup_polygon;
+    void (*rasterize)(const std::vector<TriangleSetup>&, const RasterParams&, VisibilityBuffer&) = raster::rasterize;
+    std::vector<glm::vec2> (*sample_offsets)(int, SamplePattern) = raster::sample_offsets;
+    LightingFunction lighting = evaluate_lighting;
+};
+
+}  // namespace raster

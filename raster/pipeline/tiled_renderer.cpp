@@ -1,0 +1,387 @@
+// The fast path: bins, per-tile sample planes, block-level trivial accept/reject, shading per tile.
+#include "raster/pipeline/tiled_renderer.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <atomic>
+#include <chrono>
+
+#include "raster/core/parallel.h"
+#include "raster/pipeline/reference_rasterizer.h"
+#include "raster/pipeline/resolve.h"
+#include "raster/pipeline/sample_pattern.h"
+
+namespace raster {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The tiles of the frame and, for each, the setups that may cover one of its samples, in draw order.
+struct Bins {
+    int tiles_x = 0, tiles_y = 0;
+    std::vector<std::vector<uint32_t>>& setups;  // the workspace's lists, reused frame to frame
+};
+
+// Smallest and largest value of an edge function over the sample positions of the pixel rectangle
+// [x0, x1] x [y0, y1] (inclusive), which lie in [x0 << F + min offset, x1 << F + max offset] and likewise in y.
+struct EdgeRange {
+    int64_t min, max;
+};
+
+struct SampleBounds {
+    int64_t min_x, max_x, min_y, max_y;  // extreme sample offsets inside a pixel, fixed point
+};
+
+inline EdgeRange edge_range(const TriangleSetup& t, int i, int x0, int x1, int y0, int y1, int fixed_bits,
+                            const SampleBounds& bounds) {
+    const int64_t lo_x = (int64_t{x0} << fixed_bits) + bounds.min_x, hi_x = (int64_t{x1} << fixed_bits) + bounds.max_x;
+    const int64_t lo_y = (int64_t{y0} << fixed_bits) + bounds.min_y, hi_y = (int64_t{y1} << fixed_bits) + bounds.max_y;
+    const int64_t base = t.c[i] + t.bias[i];
+    const int64_t ax_lo = t.a[i] * lo_x, ax_hi = t.a[i] * hi_x, by_lo = t.b[i] * lo_y, by_hi = t.b[i] * hi_y;
+    return {base + std::min(ax_lo, ax_hi) + std::min(by_lo, by_hi), base + std::max(ax_lo, ax_hi) + std::max(by_lo, by_hi)};
+}
+
+Bins bin_setups(const std::vector<TriangleSetup>& setups, int width, int height, int fixed_bits,
+                const SampleBounds& bounds, std::vector<std::vector<uint32_t>>& lists) {
+    Bins bins{(width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, lists};
+    bins.setups.resize(static_cast<size_t>(bins.tiles_x) * bins.tiles_y);
+    for (std::vector<uint32_t>& list : bins.setups) list.clear();
+    for (uint32_t index = 0; index < setups.size(); ++index) {
+        const TriangleSetup& t = setups[index];
+        const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
+        const int ty0 = t.min_y / kTileSize, ty1 = t.max_y / kTileSize;
+        const bool single_tile = tx0 == tx1 && ty0 == ty1;
+        for (int ty = ty0; ty <= ty1; ++ty)
+            for (int tx = tx0; tx <= tx1; ++tx) {
+                if (!single_tile) {  // skip tiles of the bounding box that an edge keeps entirely outside
+                    const int x0 = std::max(t.min_x, tx * kTileSize), x1 = std::min(t.max_x, tx * kTileSize + kTileSize - 1);
+                    const int y0 = std::max(t.min_y, ty * kTileSize), y1 = std::min(t.max_y, ty * kTileSize + kTileSize - 1);
+                    bool outside = false;
+                    for (int i = 0; i < 3 && !outside; ++i)
+                        outside = edge_range(t, i, x0, x1, y0, y1, fixed_bits, bounds).max < 0;
+                    if (outside) continue;
+                }
+                bins.setups[static_cast<size_t>(ty) * bins.tiles_x + tx].push_back(index);
+            }
+    }
+    return bins;
+}
+
+// Hierarchical Z: for each 8x8 block of the tile, the smallest depth key stored in it (-inf while
+// any sample may be empty). A triangle whose key cannot exceed that bound anywhere in the block loses every depth
+// test there (ties keep the earlier triangle), so the block is skipped: the output never changes, only the work.
+constexpr int kBlocksPerTileSide = kTileSize / kBlockSize;
+constexpr double kNoBound = -std::numeric_limits<double>::infinity();
+
+// How far a sample's key can sit above the plane's double value at the block's corners: the plane's evaluation in
+// double and the key's rounding to float (2^-24 relative) stay well inside a relative 2^-22; fixed24 rounds to the
+// nearest level, up to half a level more.
+inline double key_rounding_margin(double key, bool fixed24) {
+    return std::fabs(key) * 0x1p-22 + (fixed24 ? 0.5 : 0.0) + 1e-300;
+}
+
+// One worker's tile planes: depth and winning setup per sample, and the per-triangle sample constants.
+struct TileScratch {
+    std::vector<float> depth;
+    std::vector<uint32_t> winner;
+    std::array<double, kBlocksPerTileSide * kBlocksPerTileSide> block_far;  // hierarchical Z bounds
+    std::array<uint32_t, kBlocksPerTileSide * kBlocksPerTileSide> block_filled;  // non-empty samples per block
+    size_t hidden_blocks = 0;                                               // blocks it skipped, this tile
+    // For the samples of one block row, j = pixel * samples + sample: each edge's offset from the edge value at
+    // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the coverage flags.
+    std::vector<int64_t> row_offset[3];
+    std::vector<uint8_t> row_covered;
+    std::vector<uint32_t> pixel_triangle;
+    std::vector<glm::vec3> pixel_bary;
+};
+
+struct TileJob {
+    const std::vector<TriangleSetup>& setups;
+    const FixedSampleOffsets& offsets;
+    const SampleBounds& bounds;
+    int fixed_bits;
+    int width, height, samples;
+    bool hierarchical_z;
+};
+
+// The largest value of a triangle's depth plane over the sample positions of a pixel rectangle: the plane is
+// affine, so it is at one of the rectangle's corners (extrapolated beyond the triangle, which only raises it).
+inline double max_key_over(const TriangleSetup& t, const DepthPlane& depth, int x0, int x1, int y0, int y1, int F,
+                           const SampleBounds& bounds) {
+    const int64_t xs[2] = {(int64_t{x0} << F) + bounds.min_x, (int64_t{x1} << F) + bounds.max_x};
+    const int64_t ys[2] = {(int64_t{y0} << F) + bounds.min_y, (int64_t{y1} << F) + bounds.max_y};
+    double largest = -std::numeric_limits<double>::infinity();
+    for (int64_t X : xs)
+        for (int64_t Y : ys)
+            largest = std::max(largest, depth.value(t.a[1] * X + t.b[1] * Y + t.c[1], t.a[2] * X + t.b[2] * Y + t.c[2]));
+    return largest;
+}
+
+// Coverage flags of the n samples of a block row. A plain loop over arrays, so that the AVX2 build of the caller
+// vectorizes it (four 64-bit lanes per instruction); integer arithmetic, so every build gives the same flags.
+inline void row_coverage(const int64_t (&base)[3], const int64_t* offset0, const int64_t* offset1,
+                         const int64_t* offset2, size_t n, uint8_t* covered) {
+    for (size_t j = 0; j < n; ++j)
+        covered[j] = ((base[0] + offset0[j]) | (base[1] + offset1[j]) | (base[2] + offset2[j])) >= 0;
+}
+
+// Samples of the block at (block_x0, block_y0) inside the image.
+inline uint32_t block_samples(const TileJob& job, int block_x0, int block_y0) {
+    return static_cast<uint32_t>((std::min(block_x0 + kBlockSize, job.width) - block_x0) *
+                                 (std::min(block_y0 + kBlockSize, job.height) - block_y0) * job.samples);
+}
+
+// The smallest stored key of a block whose samples are all covered: a triangle whose key nowhere exceeds it loses
+// every depth test in the block. Eight independent running minima, so the loop vectorizes without reassociating.
+inline double block_min_key(const TileJob& job, const TileScratch& scratch, int block_x0, int block_y0, int tile_x,
+                            int tile_y) {
+    constexpr int kLanes = 8;
+    const int S = job.samples;
+    const size_t n = static_cast<size_t>(std::min(block_x0 + kBlockSize, job.width) - block_x0) * S;
+    float lane[kLanes];
+    std::fill(lane, lane + kLanes, std::numeric_limits<float>::infinity());
+    for (int py = block_y0; py < std::min(block_y0 + kBlockSize, job.height); ++py) {
+        const float* depth =
+            scratch.depth.data() + (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(block_x0 - tile_x)) * S;
+        size_t j = 0;
+        for (; j + kLanes <= n; j += kLanes)
+            for (int k = 0; k < kLanes; ++k) lane[k] = depth[j + k] < lane[k] ? depth[j + k] : lane[k];
+        for (; j < n; ++j) lane[0] = depth[j] < lane[0] ? depth[j] : lane[0];
+    }
+    return static_cast<double>(*std::min_element(lane, lane + kLanes));
+}
+
+// Rasterizes one setup into the tile: its bounding box clipped to the tile, in 8x8-pixel blocks that are
+// skipped when an edge keeps them entirely outside and taken whole when every edge keeps them inside.
+inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob& job, uint32_t index, int tile_x,
+                                                                  int tile_y, TileScratch& scratch) {
+    const TriangleSetup& t = job.setups[index];
+    const int F = job.fixed_bits, S = job.samples;
+    const int x0 = std::max(t.min_x, tile_x), x1 = std::min(t.max_x, tile_x + kTileSize - 1);
+    const int y0 = std::max(t.min_y, tile_y), y1 = std::min(t.max_y, tile_y + kTileSize - 1);
+    for (int i = 0; i < 3; ++i) {
+        int64_t* offset = scratch.row_offset[i].data();
+        for (int k = 0; k < kBlockSize; ++k)
+            for (int s = 0; s < S; ++s)
+                offset[static_cast<size_t>(k) * S + s] =
+                    (t.a[i] * k << F) + t.a[i] * job.offsets.x[s] + t.b[i] * job.offsets.y[s] + t.bias[i];
+    }
+    const DepthPlane depth(t);
+    uint8_t* covered = scratch.row_covered.data();
+    for (int by = y0; by <= y1; by = (by / kBlockSize + 1) * kBlockSize) {
+        const int block_y1 = std::min(y1, (by / kBlockSize + 1) * kBlockSize - 1);
+        for (int bx = x0; bx <= x1; bx = (bx / kBlockSize + 1) * kBlockSize) {
+            const int block_x1 = std::min(x1, (bx / kBlockSize + 1) * kBlockSize - 1);
+            bool reject = false, accept = true;
+            for (int i = 0; i < 3; ++i) {
+                const EdgeRange range = edge_range(t, i, bx, block_x1, by, block_y1, F, job.bounds);
+                reject = reject || range.max < 0;
+                accept = accept && range.min >= 0;
+            }
+            if (reject) continue;
+            double* block_far = nullptr;
+            uint32_t filled_before = 0, newly_filled = 0;
+            const int block_x0 = bx / kBlockSize * kBlockSize, block_y0 = by / kBlockSize * kBlockSize;
+            const size_t block = static_cast<size_t>((block_y0 - tile_y) / kBlockSize) * kBlocksPerTileSide +
+                                 static_cast<size_t>((block_x0 - tile_x) / kBlockSize);
+            if (job.hierarchical_z) {
+                block_far = &scratch.block_far[block];
+                filled_before = scratch.block_filled[block];
+                const double nearest = max_key_over(t, depth, bx, block_x1, by, block_y1, F, job.bounds);
+                if (nearest + key_rounding_margin(nearest, depth.fixed24) <= *block_far) {  // all hidden
+                    ++scratch.hidden_blocks;
+                    continue;
+                }
+            }
+            bool wrote = false;
+            const size_t n = static_cast<size_t>(block_x1 - bx + 1) * S;
+            if (accept) std::fill(covered, covered + n, uint8_t{1});
+            for (int py = by; py <= block_y1; ++py) {
+                int64_t base[3];
+                for (int i = 0; i < 3; ++i) base[i] = t.a[i] * (int64_t{bx} << F) + t.b[i] * (int64_t{py} << F) + t.c[i];
+                if (!accept)
+                    row_coverage(base, scratch.row_offset[0].data(), scratch.row_offset[1].data(),
+                                 scratch.row_offset[2].data(), n, covered);
+                const size_t row_start = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(bx - tile_x)) * S;
+                for (size_t j = 0; j < n; ++j) {
+                    if (!covered[j]) continue;
+                    const int64_t e1 = base[1] + scratch.row_offset[1][j] - t.bias[1];
+                    const int64_t e2 = base[2] + scratch.row_offset[2][j] - t.bias[2];
+                    const float d = depth.at(e1, e2);
+                    const size_t at = row_start + j;
+                    const bool empty = scratch.winner[at] == kNoTriangle;
+                    if (empty || d > scratch.depth[at]) {
+                        scratch.depth[at] = d;
+                        scratch.winner[at] = index;
+                        wrote = true;
+                        newly_filled += empty;
+                    }
+                }
+            }
+            if (block_far && wrote) {
+                // While any sample of the block is empty the bound stays -inf; once all are covered it is their minimum.
+                const uint32_t filled = scratch.block_filled[block] = filled_before + newly_filled;
+                if (filled == block_samples(job, block_x0, block_y0))
+                    *block_far = block_min_key(job, scratch, block_x0, block_y0, tile_x, tile_y);
+            }
+        }
+    }
+}
+
+__attribute__((target("avx2"))) void rasterize_in_tile_avx2(const TileJob& job, uint32_t index, int tile_x, int tile_y,
+                                                            TileScratch& scratch) {
+    rasterize_in_tile_body(job, index, tile_x, tile_y, scratch);
+}
+
+void rasterize_in_tile_portable(const TileJob& job, uint32_t index, int tile_x, int tile_y, TileScratch& scratch) {
+    rasterize_in_tile_body(job, index, tile_x, tile_y, scratch);
+}
+
+// Shades the tile's pixels into the image and, when kept, writes its samples into the visibility buffer.
+size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver& resolver, bool msaa,
+                    TileScratch& scratch, Image& image, VisibilityBuffer* visibility) {
+    const int S = job.samples, F = job.fixed_bits;
+    const int x1 = std::min(job.width, tile_x + kTileSize), y1 = std::min(job.height, tile_y + kTileSize);
+    size_t covered = 0;
+    for (int py = tile_y; py < y1; ++py) {
+        for (int px = tile_x; px < x1; ++px) {
+            const size_t first = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * S;
+            if (!visibility) {  // the common pixels, answered without per-sample bookkeeping
+                const uint32_t winner = scratch.winner[first];
+                bool uniform = true;
+                for (int s = 1; s < S && uniform; ++s) uniform = scratch.winner[first + s] == winner;
+                if (uniform && winner == kNoTriangle) {
+                    resolver.background(image.at(px, py));
+                    continue;
+                }
+                if (uniform && (msaa || S == 1)) {
+                    const TriangleSetup& t = job.setups[winner];
+                    const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[0],
+                                                                  (int64_t{py} << F) + job.offsets.y[0]);
+                    resolver.one_triangle(t.triangle_id, hit.bary, image.at(px, py));
+                    covered += static_cast<size_t>(S);
+                    continue;
+                }
+            }
+            for (int s = 0; s < S; ++s) {
+                const uint32_t winner = scratch.winner[first + s];
+                if (winner == kNoTriangle) {
+                    scratch.pixel_triangle[s] = kNoTriangle;
+                    scratch.pixel_bary[s] = glm::vec3(0.0f);
+                    if (visibility) {
+                        const size_t at = visibility->index(px, py, s);
+                        visibility->triangle[at] = kNoTriangle;
+                        visibility->bary[at] = glm::vec3(0.0f);
+                        visibility->view_depth[at] = 0.0f;
+                    }
+                    continue;
+                }
+                ++covered;
+                const TriangleSetup& t = job.setups[winner];
+                scratch.pixel_triangle[s] = t.triangle_id;
+                // MSAA shades only the first sample of each triangle: the others need no barycentrics unless
+                // the visibility buffer is kept.
+                bool needed = true;
+                if (msaa && !visibility)
+                    for (int earlier = 0; earlier < s && needed; ++earlier)
+                        needed = scratch.pixel_triangle[earlier] != t.triangle_id;
+                if (!needed) continue;
+                const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[s],
+                                                              (int64_t{py} << F) + job.offsets.y[s]);
+                scratch.pixel_bary[s] = hit.bary;
+                if (visibility) {
+                    const size_t at = visibility->index(px, py, s);
+                    visibility->triangle[at] = t.triangle_id;
+                    visibility->bary[at] = hit.bary;
+                    visibility->view_depth[at] = hit.view_depth;
+                }
+            }
+            resolver.resolve(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image.at(px, py));
+        }
+    }
+    return covered;
+}
+
+}  // namespace
+
+void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderResult& result,
+                       const PipelineStages& stages) {
+    const auto start = Clock::now();
+    const RenderSettings& settings = scene.settings;
+    result.stats = RenderStats{};
+    RenderStats& stats = result.stats;
+
+    const TransformedScene geometry = run_vertex_stage_timed(scene, stages, stats);
+
+    auto stage_start = Clock::now();
+    set_up_triangles_into(scene, geometry, options.threads, stages, stats, result.workspace);
+    const std::vector<TriangleSetup>& setups = result.workspace.setups;
+    const int fixed_bits = fixed_bits_for(settings.snap_bits);
+    const FixedSampleOffsets offsets =
+        fixed_sample_offsets(stages.sample_offsets(settings.samples, settings.pattern), fixed_bits);
+    const int samples = static_cast<int>(offsets.x.size());
+    const SampleBounds bounds{*std::min_element(offsets.x.begin(), offsets.x.end()),
+                              *std::max_element(offsets.x.begin(), offsets.x.end()),
+                              *std::min_element(offsets.y.begin(), offsets.y.end()),
+                              *std::max_element(offsets.y.begin(), offsets.y.end())};
+    const Bins bins = bin_setups(setups, settings.width, settings.height, fixed_bits, bounds, result.workspace.tile_bins);
+    stats.ms_setup = milliseconds_since(stage_start);
+
+    stage_start = Clock::now();
+    const Shader shader(scene, geometry, stages.lighting);
+    const PixelResolver resolver(shader, resolve_params_for(scene, options), samples);
+    Image& image = result.image;
+    image.width = settings.width;
+    image.height = settings.height;
+    image.channels = resolver.channels();
+    image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
+    VisibilityBuffer* visibility = nullptr;
+    if (options.keep_visibility) {
+        result.visibility.resize(settings.width, settings.height, samples);
+        visibility = &result.visibility;
+    } else {
+        result.visibility = VisibilityBuffer{};
+    }
+    const TileJob job{setups, offsets, bounds, fixed_bits, settings.width, settings.height, samples,
+                      settings.modes.hierarchical_z};
+    std::atomic<size_t> covered{0}, hidden{0};
+    const bool use_avx2 = options.allow_simd && __builtin_cpu_supports("avx2");
+    parallel_for(bins.setups.size(), options.threads, [&](size_t tile) {
+        thread_local TileScratch scratch;
+        const size_t plane = static_cast<size_t>(kTileSize) * kTileSize * samples;
+        scratch.depth.resize(plane);
+        // An empty tile needs its planes cleared only once per thread; a tile that had triangles clears them.
+        if (scratch.winner.size() != plane) scratch.winner.assign(plane, kNoTriangle);
+        for (auto& offset : scratch.row_offset) offset.resize(static_cast<size_t>(kBlockSize) * samples);
+        scratch.row_covered.resize(static_cast<size_t>(kBlockSize) * samples);
+        scratch.pixel_triangle.resize(static_cast<size_t>(samples));
+        scratch.pixel_bary.resize(static_cast<size_t>(samples));
+        const int tile_x = static_cast<int>(tile % bins.tiles_x) * kTileSize;
+        const int tile_y = static_cast<int>(tile / bins.tiles_x) * kTileSize;
+        scratch.block_far.fill(kNoBound);
+        scratch.block_filled.fill(0);
+        scratch.hidden_blocks = 0;
+        if (bins.setups[tile].empty() && !visibility) {  // nothing drawn here: background only
+            const int x1 = std::min(settings.width, tile_x + kTileSize), y1 = std::min(settings.height, tile_y + kTileSize);
+            for (int py = tile_y; py < y1; ++py)
+                for (int px = tile_x; px < x1; ++px) resolver.background(image.at(px, py));
+            return;
+        }
+        for (uint32_t index : bins.setups[tile]) {
+            if (use_avx2) rasterize_in_tile_avx2(job, index, tile_x, tile_y, scratch);
+            else rasterize_in_tile_portable(job, index, tile_x, tile_y, scratch);
+        }
+        covered += resolve_tile(job, tile_x, tile_y, resolver, settings.msaa, scratch, image, visibility);
+        hidden += scratch.hidden_blocks;
+        if (!bins.setups[tile].empty()) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
+    });
+    stats.samples = static_cast<size_t>(settings.width) * settings.height * samples;
+    stats.covered_samples = covered;
+    stats.hidden_blocks = hidden;
+    stats.ms_raster = milliseconds_since(stage_start);  // rasterization and shading are interleaved per tile
+    stats.ms_total = milliseconds_since(start);
+}
+
+}  // namespace raster

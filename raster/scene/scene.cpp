@@ -1,0 +1,49 @@
+// Names of the scene's enumerations, shared by the loaders and the command line.
+#include "raster/scene/scene.h"
+
+namespace raster {
+
+namespace {
+struct ShadingName {
+    ShadingMode mode;
+    const char* name;
+};
+constexpr ShadingName kShadingNames[] = {
+    {ShadingMode::unlit, "unlit"},     {ShadingMode::flat, "flat"},
+    {ShadingMode::gouraud, "gouraud"}, {ShadingMode::phong, "phong"},
+    {ShadingMode::blinn_phong, "blinn-phong"},
+};
+}  // namespace
+
+const char* to_string(ShadingMode mode) {
+    for (const auto& entry : kShadingNames)
+        if (entry.mode == mode) return entry.name;
+    return "?";
+}
+
+const char* to_string(SamplePattern pattern) { return pattern == SamplePattern::grid ? "grid" : "standard"; }
+
+bool parse_shading_mode(const std::string& name, ShadingMode& out) {
+    for (const auto& entry : kShadingNames) {
+        if (name == entry.name) {
+            out = entry.mode;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool parse_sample_pattern(const std::string& name, SamplePattern& out) {
+    if (name == "standard") out = SamplePattern::standard;
+    else if (name == "grid") out = SamplePattern::grid;
+    else return false;
+    return true;
+}
+
+size_t triangle_count(const Scene& scene) {
+    size_t total = 0;
+    for (const auto& mesh : scene.meshes) total += mesh.data.triangles.size();
+    return total;
+}
+
+}  // namespace raster

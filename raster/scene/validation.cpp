@@ -1,0 +1,111 @@
+// Scene validation: the limits and the camera checks every renderer relies on, whatever format the scene came from.
+#include "raster/scene/validation.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "raster/core/errors.h"
+#include "raster/scene/camera_matrices.h"
+#include "raster/scene/sample_counts.h"
+
+namespace raster {
+
+uint64_t frame_bytes(const RenderSettings& settings) {
+    // Per sample: visibility buffer (4 id + 12 barycentrics + 4 depth) + z-buffer 4 + winner 4.
+    // Per pixel: up to 4 bytes of output image.
+    const uint64_t pixels = uint64_t(std::max(settings.width, 0)) * uint64_t(std::max(settings.height, 0));
+    return pixels * uint64_t(std::max(settings.samples, 0)) * 28u + pixels * 4u;
+}
+
+namespace {
+
+bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+std::string settings_problem(const RenderSettings& s) {
+    if (s.width < 1 || s.height < 1 || s.width > kMaxImageDimension || s.height > kMaxImageDimension)
+        return "image size " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is outside 1.." +
+               std::to_string(kMaxImageDimension) + " per side";
+    if (std::string error = sample_count_error(s.samples, s.pattern); !error.empty()) return error;
+    if (frame_bytes(s) > kMaxFrameBytes)
+        return "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " image with " +
+               std::to_string(s.samples) + " samples needs " + std::to_string(frame_bytes(s) >> 20) +
+               " MiB of frame buffers, over the " + std::to_string(kMaxFrameBytes >> 20) + " MiB cap";
+    if (s.snap_bits < kMinSnapBits || s.snap_bits > kMaxSnapBits)
+        return "snap bits must be " + std::to_string(kMinSnapBits) + ".." + std::to_string(kMaxSnapBits);
+    if (!finite3(s.background) || !finite3(s.ambient_light)) return "background and ambient light must be finite";
+    return "";
+}
+
+std::optional<CameraProblem> camera_problem(const Camera& c) {
+    if (!finite3(c.eye) || !finite3(c.target) || !finite3(c.up))
+        return CameraProblem{!finite3(c.eye) ? CameraField::eye : !finite3(c.target) ? CameraField::target : CameraField::up,
+                             "camera eye, target and up must be finite"};
+    if (!(c.near > 0.0f) || !std::isfinite(c.near))
+        return CameraProblem{CameraField::near, "camera near must be > 0, got " + std::to_string(c.near)};
+    // Setup stores 1 / w in float, and w goes down to near: a subnormal near would make it infinite.
+    if (c.near < std::numeric_limits<float>::min()) {
+        char near[32];
+        std::snprintf(near, sizeof near, "%g", double(c.near));
+        return CameraProblem{CameraField::near,
+                             std::string("camera near must be > 0 and a normal float (at least 1.17549e-38), got ") + near};
+    }
+    if (!(c.far > c.near) || !std::isfinite(c.far))
+        return CameraProblem{CameraField::far, "camera far (" + std::to_string(c.far) +
+                                                   ") must be finite and greater than near (" + std::to_string(c.near) + ")"};
+    if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
+        return CameraProblem{CameraField::fov,
+                             "camera field of view must be in (0, 180) degrees, got " + std::to_string(c.fov_y_degrees)};
+    const glm::vec3 view = c.target - c.eye;
+    if (!(glm::length(view) > 0.0f)) return CameraProblem{CameraField::target, "camera eye and target are the same point"};
+    const glm::vec3 side = glm::cross(glm::normalize(view), c.up);
+    if (!(glm::length(side) > 1e-6f * glm::length(c.up)) || !(glm::length(c.up) > 0.0f))
+        return CameraProblem{CameraField::up, "camera up is parallel to the view direction (or zero)"};
+    return std::nullopt;
+}
+
+void validate_scene(const Scene& scene) {
+    auto fail = [&](const std::string& message) { throw InputError(scene.path, 0, 0, message); };
+    if (std::string problem = settings_problem(scene.settings); !problem.empty()) fail(problem);
+    if (const auto problem = camera_problem(scene.camera)) fail(problem->message);
+    // A field of view so narrow that 1 / tan(fov / 2) overflows float gives an infinite projection: nothing could
+    // be drawn, and camera rays (the oracle's) would be NaN.
+    const glm::mat4 projection = projection_matrix(scene.camera, scene.settings.width, scene.settings.height);
+    for (int column = 0; column < 4; ++column)
+        if (!finite3(glm::vec3(projection[column])) || !std::isfinite(projection[column].w)) {
+            char fov[32];
+            std::snprintf(fov, sizeof fov, "%g", double(scene.camera.fov_y_degrees));
+            fail(std::string("camera field of view ") + fov + " degrees is too narrow: its projection overflows float");
+        }
+    if (triangle_count(scene) >= kNoTriangle) fail("too many triangles");
+
+    for (const Light& light : scene.lights)
+        if (!finite3(light.position) || !finite3(light.color) || !std::isfinite(light.intensity))
+            fail("light position, colour and intensity must be finite");
+    for (const SceneMesh& mesh : scene.meshes) {
+        const MeshData& m = mesh.data;
+        for (const glm::vec3& p : m.positions)
+            if (!finite3(p)) fail(mesh.source + ": vertex coordinates must be finite");
+        for (size_t t = 0; t < m.triangles.size(); ++t)
+            for (uint32_t v : m.triangles[t].v)
+                if (v >= m.positions.size())
+                    fail(mesh.source + ": triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) +
+                         " but there are only " + std::to_string(m.positions.size()));
+        if (!m.normals.empty() && m.normals.size() != m.positions.size()) fail(mesh.source + ": normals count mismatch");
+        if (!m.colors.empty() && m.colors.size() != m.positions.size()) fail(mesh.source + ": colour count mismatch");
+        if (!m.face_colors.empty() && m.face_colors.size() != m.triangles.size())
+            fail(mesh.source + ": face colour count mismatch");
+        for (int r = 0; r < 4; ++r)
+            for (int col = 0; col < 4; ++col)
+                if (!std::isfinite(mesh.model[col][r])) fail(mesh.source + ": the model transform is not finite");
+        if (!std::isfinite(mesh.material.exponent) || !finite3(mesh.material.ambient) ||
+            !finite3(mesh.material.diffuse) || !finite3(mesh.material.specular) || !finite3(mesh.material.color))
+            fail(mesh.source + ": material values must be finite");
+    }
+}
+
+}  // namespace raster
