@@ -131,21 +131,21 @@ BalboaArgs parse_balboa_args(const std::vector<std::string>& args) {
         if (parsed.vertex[0] || parsed.vertex[1] || parsed.vertex[2] || parsed.color)
             usage_error("-p0, -p1, -p2 and -color are for -hw 2_1 only");
     }
-    const std::string problem = balboa_camera_problem(parsed.s.value_or(kBalboaDefaultS),
-                                                      parsed.z_near.value_or(kBalboaDefaultZNear));
+    const std::string problem = seed001_camera_problem(parsed.s.value_or(kSeed001DefaultS),
+                                                      parsed.z_near.value_or(kSeed001DefaultZNear));
     if (!problem.empty()) usage_error(problem);
     return parsed;
 }
 
 // The scene parts' file, with -s and -znear overriding the scene's own values.
-Scene balboa_file_scene(const BalboaArgs& args) {
+Scene seed001_file_scene(const BalboaArgs& args) {
     SceneFormat format = SceneFormat::raster;
     Scene scene = load_scene(args.scene, &format);
     if (format != SceneFormat::seed001)
         throw InputError(args.scene, 0, 0, "not a balboa scene (expected top-level 'camera' and 'objects')");
     if (args.s || args.z_near) {
         const float scene_s = float(std::tan(double(scene.camera.fov_y_degrees) * (M_PI / 360.0)));
-        set_balboa_camera(args.s.value_or(scene_s), args.z_near.value_or(scene.camera.near), scene);
+        set_seed001_camera(args.s.value_or(scene_s), args.z_near.value_or(scene.camera.near), scene);
     }
     return scene;
 }
@@ -165,14 +165,14 @@ int run_balboa(const std::vector<std::string>& raw, std::ostream& out, std::ostr
             return kExitOk;
         }
         if (args.part == "2_1") {
-            BalboaTriangle triangle;
+            Seed001Triangle triangle;
             for (int k = 0; k < 3; ++k) triangle.vertices[k] = *args.vertex[k];
             triangle.color = *args.color;
-            triangle.s = args.s.value_or(kBalboaDefaultS);
-            triangle.z_near = args.z_near.value_or(kBalboaDefaultZNear);
-            scene = balboa_triangle_scene(triangle);
+            triangle.s = args.s.value_or(kSeed001DefaultS);
+            triangle.z_near = args.z_near.value_or(kSeed001DefaultZNear);
+            scene = seed001_triangle_scene(triangle);
         } else {
-            scene = balboa_file_scene(args);
+            scene = seed001_file_scene(args);
         }
         output = args.output.empty() ? default_output(args) : std::filesystem::path(args.output);
     } catch (const InputError& error) {

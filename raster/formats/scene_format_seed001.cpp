@@ -19,39 +19,39 @@ float field_of_view_degrees(float s) { return float(2.0 * std::atan(double(s)) *
 
 }  // namespace
 
-std::string balboa_camera_problem(float s, float z_near) {
+std::string seed001_camera_problem(float s, float z_near) {
     char text[160];
     if (!(s > 0.0f) || !std::isfinite(s) || !(field_of_view_degrees(s) < 180.0f)) {
         std::snprintf(text, sizeof text, "s must be a positive number (half the image plane's height), got %g", s);
         return text;
     }
-    if (!(z_near > 0.0f) || !(z_near < kBalboaFar)) {
-        std::snprintf(text, sizeof text, "z_near must be > 0 and < %g, got %g", kBalboaFar, z_near);
+    if (!(z_near > 0.0f) || !(z_near < kSeed001Far)) {
+        std::snprintf(text, sizeof text, "z_near must be > 0 and < %g, got %g", kSeed001Far, z_near);
         return text;
     }
     return "";
 }
 
-void set_balboa_camera(float s, float z_near, Scene& scene) {
+void set_seed001_camera(float s, float z_near, Scene& scene) {
     scene.camera.eye = glm::vec3(0.0f);
     scene.camera.target = glm::vec3(0.0f, 0.0f, -1.0f);
     scene.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
     scene.camera.fov_y_degrees = field_of_view_degrees(s);
     scene.camera.near = z_near;
-    scene.camera.far = kBalboaFar;
+    scene.camera.far = kSeed001Far;
     scene.settings.samples = 16;
     scene.settings.pattern = SamplePattern::grid;  // "a 4x4 supersampling", as in homework 1
     scene.settings.shading = ShadingMode::unlit;
     scene.settings.cull_backfaces = false;
 }
 
-Scene balboa_triangle_scene(const BalboaTriangle& triangle) {
+Scene seed001_triangle_scene(const Seed001Triangle& triangle) {
     Scene scene;
     scene.path = "balboa -hw 2_1";
-    scene.settings.width = kBalboaDefaultWidth;
-    scene.settings.height = kBalboaDefaultHeight;
-    scene.settings.background = glm::vec3(kBalboaBackground);
-    set_balboa_camera(triangle.s, triangle.z_near, scene);
+    scene.settings.width = kSeed001DefaultWidth;
+    scene.settings.height = kSeed001DefaultHeight;
+    scene.settings.background = glm::vec3(kSeed001Background);
+    set_seed001_camera(triangle.s, triangle.z_near, scene);
     SceneMesh mesh;
     mesh.source = "-p0 -p1 -p2";
     mesh.data.positions.assign(triangle.vertices.begin(), triangle.vertices.end());
@@ -73,7 +73,7 @@ void warn_unknown_keys(const YAML::Node& map, const YamlReader& reader, std::ini
 // A transform list as balboa's parse_transformation reads it, applied in the order listed (M = T_n ... T_1).
 // `lookat` takes {position, target, up} and places its object at `position` looking at `target` (eq. (28));
 // rotate, scale and translate are raster's own transform steps.
-glm::mat4 read_balboa_transform(const YAML::Node& list, const YamlReader& reader) {
+glm::mat4 read_seed001_transform(const YAML::Node& list, const YamlReader& reader) {
     reader.expect_sequence(list, "transform");
     glm::mat4 matrix(1.0f);
     for (const YAML::Node& step : list) {
@@ -163,35 +163,35 @@ void read_seed001_scene(const YAML::Node& root, const YamlReader& reader, const 
     warn_unknown_keys(camera, reader, {"resolution", "transform", "s", "z_near"}, "camera");
 
     RenderSettings& settings = scene.settings;
-    settings.width = kBalboaDefaultWidth;
-    settings.height = kBalboaDefaultHeight;
+    settings.width = kSeed001DefaultWidth;
+    settings.height = kSeed001DefaultHeight;
     if (const YAML::Node resolution = reader.optional(camera, "resolution"); resolution.IsDefined()) {
         if (!resolution.IsSequence() || resolution.size() != 2) reader.fail(resolution, "resolution is [width, height]");
         settings.width = reader.integer(resolution[0], "resolution width", 1, kMaxImageDimension);
         settings.height = reader.integer(resolution[1], "resolution height", 1, kMaxImageDimension);
     }
-    float s = kBalboaDefaultS, z_near = kBalboaDefaultZNear;
+    float s = kSeed001DefaultS, z_near = kSeed001DefaultZNear;
     const YAML::Node s_node = reader.optional(camera, "s"), z_near_node = reader.optional(camera, "z_near");
     if (s_node.IsDefined()) s = reader.finite_float(s_node, "camera s");
     if (z_near_node.IsDefined()) z_near = reader.finite_float(z_near_node, "camera z_near");
-    if (std::string problem = balboa_camera_problem(s, z_near); !problem.empty())
+    if (std::string problem = seed001_camera_problem(s, z_near); !problem.empty())
         reader.fail(problem.rfind("s ", 0) == 0 ? (s_node.IsDefined() ? s_node : camera)
                                                 : (z_near_node.IsDefined() ? z_near_node : camera),
                     problem);
-    set_balboa_camera(s, z_near, scene);
+    set_seed001_camera(s, z_near, scene);
     if (std::string problem = settings_problem(settings); !problem.empty()) reader.fail(camera, problem);
 
     // The camera's transform is camera-to-world; the view matrix, its inverse, is folded into every model matrix
     // (unlit shading needs no world space), so raster's camera stays at the origin.
     glm::mat4 camera_to_world(1.0f);
     if (const YAML::Node transform = reader.optional(camera, "transform"); transform.IsDefined()) {
-        camera_to_world = read_balboa_transform(transform, reader);
+        camera_to_world = read_seed001_transform(transform, reader);
         if (!(std::fabs(glm::determinant(camera_to_world)) > 1e-12f))
             reader.fail(transform, "the camera transform is not invertible");
     }
     const glm::mat4 view = glm::inverse(camera_to_world);
 
-    settings.background = glm::vec3(kBalboaBackground);
+    settings.background = glm::vec3(kSeed001Background);
     if (const YAML::Node background = reader.optional(root, "background"); background.IsDefined())
         settings.background = reader.vec3(background, "background", true);
 
@@ -214,7 +214,7 @@ void read_seed001_scene(const YAML::Node& root, const YamlReader& reader, const 
         }
         glm::mat4 model(1.0f);
         if (const YAML::Node transform = reader.optional(node, "transform"); transform.IsDefined())
-            model = read_balboa_transform(transform, reader);
+            model = read_seed001_transform(transform, reader);
         mesh.model = view * model;
         scene.meshes.push_back(std::move(mesh));
     }

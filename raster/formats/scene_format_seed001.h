@@ -12,30 +12,30 @@
 namespace raster {
 
 // balboa's starter code renders part 2.1 at 640 x 480; the document's JSON scenes use the same resolution.
-inline constexpr int kBalboaDefaultWidth = 640;
-inline constexpr int kBalboaDefaultHeight = 480;
+inline constexpr int kSeed001DefaultWidth = 640;
+inline constexpr int kSeed001DefaultHeight = 480;
 // balboa's projection has no far plane; raster's clipper needs one, so it sits far beyond any course scene.
-inline constexpr float kBalboaFar = 1e9f;
-inline constexpr float kBalboaDefaultS = 1.0f;
-inline constexpr float kBalboaDefaultZNear = 1e-6f;
-inline constexpr float kBalboaBackground = 0.5f;  // the document's grey (0.5, 0.5, 0.5)
+inline constexpr float kSeed001Far = 1e9f;
+inline constexpr float kSeed001DefaultS = 1.0f;
+inline constexpr float kSeed001DefaultZNear = 1e-6f;
+inline constexpr float kSeed001Background = 0.5f;  // the document's grey (0.5, 0.5, 0.5)
 
 // Empty when s (half the height of the image plane at z = -1) and z_near are usable, else what is wrong.
-std::string balboa_camera_problem(float s, float z_near);
+std::string seed001_camera_problem(float s, float z_near);
 
 // What every balboa render shares: the camera at the origin looking down -z with y up and the image plane z = -1
 // spanning [-s*a, s*a] x [-s, s] (so a vertical field of view of 2 atan(s)), the near plane at distance z_near,
 // 4x4 grid supersampling, unlit shading (face colours, else perspective-correct vertex colours) and no culling.
-// Callers check balboa_camera_problem first.
-void set_balboa_camera(float s, float z_near, Scene& scene);
+// Callers check seed001_camera_problem first.
+void set_seed001_camera(float s, float z_near, Scene& scene);
 
 // Part 2.1: one camera-space triangle in a constant colour on the grey background, 640 x 480.
-struct BalboaTriangle {
+struct Seed001Triangle {
     std::array<glm::vec3, 3> vertices{};
     glm::vec3 color{1.0f};
-    float s = kBalboaDefaultS;
-    float z_near = kBalboaDefaultZNear;
+    float s = kSeed001DefaultS;
+    float z_near = kSeed001DefaultZNear;
 };
-Scene balboa_triangle_scene(const BalboaTriangle& triangle);
+Scene seed001_triangle_scene(const Seed001Triangle& triangle);
 
 }  // namespace raster

@@ -181,7 +181,7 @@ struct ColoredTriangle {
     glm::dvec3 color[3];
 };
 
-struct BalboaView {
+struct Seed001View {
     glm::dvec3 position, right, up, direction;  // eqs. (25) to (28)
     double s = 1.0, z_near = 1e-6;
     int width = 0, height = 0;
@@ -212,7 +212,7 @@ glm::dvec3 transformed(glm::dvec3 p, const nlohmann::json& steps) {
 }
 
 // The section 4 scene, read with nlohmann::json (not raster's reader); PLY files in their ascii form.
-std::vector<ColoredTriangle> read_scene(const fs::path& file, BalboaView& view) {
+std::vector<ColoredTriangle> read_scene(const fs::path& file, Seed001View& view) {
     const nlohmann::json scene = nlohmann::json::parse(read_text(file));
     const auto& camera = scene["camera"];
     view.width = camera["resolution"][0];
@@ -274,7 +274,7 @@ struct Hit {
 
 // Through screen point (x, y): the image plane point (eq. (2) inverted), a ray from the camera, the nearest
 // triangle in front of the near plane (Moller-Trumbore), and the colour at its 3D barycentrics (eq. (15)).
-Hit cast(const BalboaView& view, const std::vector<ColoredTriangle>& triangles, double x, double y) {
+Hit cast(const Seed001View& view, const std::vector<ColoredTriangle>& triangles, double x, double y) {
     const double a = double(view.width) / view.height;
     const double px = (2.0 * x / view.width - 1.0) * view.s * a, py = (1.0 - 2.0 * y / view.height) * view.s;
     const glm::dvec3 ray = px * view.right + py * view.up + view.direction;  // camera (px, py, -1): t is depth
@@ -296,13 +296,13 @@ Hit cast(const BalboaView& view, const std::vector<ColoredTriangle>& triangles, 
 }
 
 // Screen position of a world point, and the colour an affine (not perspective-correct) interpolation would give.
-glm::dvec2 project(const BalboaView& view, const glm::dvec3& p) {
+glm::dvec2 project(const Seed001View& view, const glm::dvec3& p) {
     const glm::dvec3 d = p - view.position;
     return to_screen({glm::dot(d, view.right), glm::dot(d, view.up), -glm::dot(d, view.direction)}, view.s, view.width,
                      view.height);
 }
 
-glm::dvec3 affine_color(const BalboaView& view, const ColoredTriangle& tri, double x, double y) {
+glm::dvec3 affine_color(const Seed001View& view, const ColoredTriangle& tri, double x, double y) {
     const glm::dvec2 a = project(view, tri.p[0]), b = project(view, tri.p[1]), c = project(view, tri.p[2]);
     const double total = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
     const double w1 = ((x - a.x) * (c.y - a.y) - (c.x - a.x) * (y - a.y)) / total;
@@ -327,7 +327,7 @@ RayCastComparison compare_with_ray_cast(const fs::path& scene, const std::vector
     const CliResult result = run_raster(command);
     EXPECT_EQ(result.status, 0) << result.err;
     const Pixels image = read_pnm(dir / "out.ppm");
-    BalboaView view;
+    Seed001View view;
     const std::vector<ColoredTriangle> triangles = read_scene(scene, view);
     if (s_override > 0) view.s = s_override;
     EXPECT_EQ(image.width, view.width);
