@@ -24,7 +24,7 @@
 #include "raster/pipeline/camera_rays.h"
 #include "raster/pipeline/clip.h"
 #include "raster/core/errors.h"
-#include "raster/pipeline/reference_rasterizer.h"
+#include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/render.h"
 #include "raster/pipeline/sample_pattern.h"
 #include "raster/pipeline/setup.h"
@@ -147,8 +147,8 @@ public:
           offsets_(fixed_sample_offsets(sample_offsets(settings_.samples, settings_.pattern), fixed_bits_)) {
         // The same stages render() ran, recomputed here to know each triangle's polygon and setups.
         const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(settings_.shading));
-        const ClipVolume volume = clip_volume_for(scene.camera, settings_);
-        const SetupParams params = setup_params_for(settings_);
+        const FrameParams params = frame_params_for(scene, sample_offsets(settings_.samples, settings_.pattern), 1);
+        const ClipVolume& volume = params.clip;
         triangles_.resize(geometry.triangles.size());
         for (size_t t = 0; t < geometry.triangles.size(); ++t) {
             CheckedTriangle& checked = triangles_[t];

@@ -87,7 +87,7 @@ ClippedPolygon clip_letting_nan_through(const glm::vec4& a, const glm::vec4& b, 
 
 // Runs the real setup, then lets `fault` alter each triangle it appended: the shape of most setup mutants.
 template <class Fault>
-int setup_then(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params, std::vector<TriangleSetup>& out,
+int setup_then(const ClippedPolygon& polygon, uint32_t id, const FrameParams& params, std::vector<TriangleSetup>& out,
                Fault fault) {
     const size_t first = out.size();
     const int added = setup_polygon(polygon, id, params, out);
@@ -96,7 +96,7 @@ int setup_then(const ClippedPolygon& polygon, uint32_t id, const SetupParams& pa
 }
 
 // "no fill rule": samples exactly on an edge are inside for every triangle, so shared edges are covered twice.
-int setup_without_fill_rule(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
+int setup_without_fill_rule(const ClippedPolygon& polygon, uint32_t id, const FrameParams& params,
                             std::vector<TriangleSetup>& out) {
     return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
         for (int64_t& bias : t.bias) bias = 0;
@@ -104,7 +104,7 @@ int setup_without_fill_rule(const ClippedPolygon& polygon, uint32_t id, const Se
 }
 
 // "cracks on shared edges": samples exactly on an edge are outside for every triangle.
-int setup_with_cracks(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
+int setup_with_cracks(const ClippedPolygon& polygon, uint32_t id, const FrameParams& params,
                       std::vector<TriangleSetup>& out) {
     return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
         for (int64_t& bias : t.bias) bias = -1;
@@ -114,16 +114,16 @@ int setup_with_cracks(const ClippedPolygon& polygon, uint32_t id, const SetupPar
 // "float edge functions": the edge equations are set up in float (24-bit mantissa), so c = dy * x - dx * y is
 // rounded; two triangles sharing an edge round it differently and the edge cracks or doubles. That is the
 // EdgeArithmetic::float32 mode, forced on whatever the scene asks for.
-int setup_with_float_edges(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
+int setup_with_float_edges(const ClippedPolygon& polygon, uint32_t id, const FrameParams& params,
                            std::vector<TriangleSetup>& out) {
-    SetupParams float_edges = params;
+    FrameParams float_edges = params;
     float_edges.edges = EdgeArithmetic::float32;
     return setup_polygon(polygon, id, float_edges, out);
 }
 
 // "fill rule inverted (bottom-right)": samples on an edge belong to the triangle when the edge is a bottom or right
 // edge. Still watertight, but every shared sample goes to the other triangle.
-int setup_with_bottom_right_rule(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
+int setup_with_bottom_right_rule(const ClippedPolygon& polygon, uint32_t id, const FrameParams& params,
                                  std::vector<TriangleSetup>& out) {
     return setup_then(polygon, id, params, out, [](TriangleSetup& t) {
         for (int i = 0; i < 3; ++i) {
@@ -134,11 +134,11 @@ int setup_with_bottom_right_rule(const ClippedPolygon& polygon, uint32_t id, con
 }
 
 // "sub-pixel triangles discarded (det < 1)": triangles smaller than one square pixel are thrown away.
-int setup_discarding_sub_pixel(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
+int setup_discarding_sub_pixel(const ClippedPolygon& polygon, uint32_t id, const FrameParams& params,
                                std::vector<TriangleSetup>& out) {
     const size_t first = out.size();
     setup_polygon(polygon, id, params, out);
-    const int fixed_bits = fixed_bits_for(params.snap_bits);
+    const int fixed_bits = params.fixed_bits;
     const int64_t one_pixel_area2 = int64_t{2} << (2 * fixed_bits);
     size_t kept = first;
     for (size_t i = first; i < out.size(); ++i)
@@ -148,7 +148,7 @@ int setup_discarding_sub_pixel(const ClippedPolygon& polygon, uint32_t id, const
 }
 
 // "y not flipped": NDC y goes to screen y unflipped, so the image comes out upside down.
-int setup_without_y_flip(const ClippedPolygon& polygon, uint32_t id, const SetupParams& params,
+int setup_without_y_flip(const ClippedPolygon& polygon, uint32_t id, const FrameParams& params,
                          std::vector<TriangleSetup>& out) {
     ClippedPolygon flipped = polygon;
     for (int i = 0; i < flipped.count; ++i) flipped.vertices[i].position.y = -flipped.vertices[i].position.y;
@@ -163,18 +163,18 @@ bool faces_front_inverted(const glm::vec4& a, const glm::vec4& b, const glm::vec
 
 // "affine instead of perspective-correct": attributes are interpolated linearly in screen space (every vertex
 // weighted as if w were 1), so textures and colours swim and view depth is wrong.
-void rasterize_affine(const std::vector<TriangleSetup>& triangles, const RasterParams& params, VisibilityBuffer& out) {
+void rasterize_affine(const std::vector<TriangleSetup>& triangles, const FrameParams& params, VisibilityBuffer& out) {
     std::vector<TriangleSetup> affine = triangles;
     for (TriangleSetup& t : affine) t.affine = true;  // the Interpolation::affine mode, forced
-    rasterize(affine, params, out);
+    rasterize_reference(affine, params, out);
 }
 
 // "depth buffer initialised with numeric_limits<float>::min()": with a conventional less-than test on
 // d' = 1 - d (0 at near), the cleared value min() ~ 1e-38 is nearer than every surface, so nothing survives
 // but fragments exactly on the near plane.
-void rasterize_with_depth_cleared_to_min(const std::vector<TriangleSetup>& triangles, const RasterParams& params,
+void rasterize_with_depth_cleared_to_min(const std::vector<TriangleSetup>& triangles, const FrameParams& params,
                                          VisibilityBuffer& out) {
-    rasterize(triangles, params, out);
+    rasterize_reference(triangles, params, out);
     for (size_t i = 0; i < out.size(); ++i) {
         if (out.triangle[i] == kNoTriangle) continue;
         out.triangle[i] = kNoTriangle;  // 1 - d >= min() for every d < 1: the fragment fails "1 - d < min()"
@@ -187,13 +187,13 @@ void rasterize_with_depth_cleared_to_min(const std::vector<TriangleSetup>& trian
 // then lets `resolve(setup, X, Y, pixel_x, pixel_y, fixed_bits, bary, view_depth)` write the sample's entry: the
 // shape of a rasterizer whose coverage and depth test are right but whose resolve is faulty.
 template <class Resolve>
-void rasterize_with_resolve(const std::vector<TriangleSetup>& triangles, const RasterParams& params,
+void rasterize_with_resolve(const std::vector<TriangleSetup>& triangles, const FrameParams& params,
                             VisibilityBuffer& out, Resolve resolve) {
     std::vector<TriangleSetup> indexed = triangles;
     for (size_t i = 0; i < indexed.size(); ++i) indexed[i].triangle_id = static_cast<uint32_t>(i);
-    rasterize(indexed, params, out);
-    const int fixed_bits = fixed_bits_for(params.snap_bits);
-    const FixedSampleOffsets offsets = fixed_sample_offsets(params.sample_offsets, fixed_bits);
+    rasterize_reference(indexed, params, out);
+    const int fixed_bits = params.fixed_bits;
+    const FixedSampleOffsets& offsets = params.fixed_offsets;
     for (int y = 0; y < out.height; ++y)
         for (int x = 0; x < out.width; ++x)
             for (int s = 0; s < out.samples; ++s) {
@@ -218,7 +218,7 @@ glm::dvec3 screen_barycentrics(const TriangleSetup& t, int64_t X, int64_t Y) {
 // "view depth interpolated linearly (w instead of 1/w)": the sample's w is the screen-space interpolation of the
 // vertices' w, and the perspective weights l_i / w_i are scaled by it without renormalising, so the barycentrics
 // no longer sum to 1 and the depth is too large inside the triangle.
-void rasterize_with_linear_w(const std::vector<TriangleSetup>& triangles, const RasterParams& params,
+void rasterize_with_linear_w(const std::vector<TriangleSetup>& triangles, const FrameParams& params,
                              VisibilityBuffer& out) {
     rasterize_with_resolve(triangles, params, out,
                            [](const TriangleSetup& t, int64_t X, int64_t Y, int, int, int, glm::vec3& bary, float& depth) {
@@ -234,7 +234,7 @@ void rasterize_with_linear_w(const std::vector<TriangleSetup>& triangles, const 
 
 // "barycentrics evaluated at the pixel centre": coverage is tested at each sample, but the attributes of every
 // sample are interpolated at its pixel's centre, which may lie outside the triangle (negative barycentrics).
-void rasterize_with_pixel_centre_barycentrics(const std::vector<TriangleSetup>& triangles, const RasterParams& params,
+void rasterize_with_pixel_centre_barycentrics(const std::vector<TriangleSetup>& triangles, const FrameParams& params,
                                               VisibilityBuffer& out) {
     rasterize_with_resolve(triangles, params, out,
                            [](const TriangleSetup& t, int64_t, int64_t, int x, int y, int fixed_bits, glm::vec3& bary,
@@ -253,12 +253,12 @@ void rasterize_with_pixel_centre_barycentrics(const std::vector<TriangleSetup>& 
 
 // "no depth test (the first triangle drawn stays)": every fragment gets the same depth, so wherever triangles
 // overlap the draw order decides, not the distance.
-void rasterize_without_depth_test(const std::vector<TriangleSetup>& triangles, const RasterParams& params,
+void rasterize_without_depth_test(const std::vector<TriangleSetup>& triangles, const FrameParams& params,
                                   VisibilityBuffer& out) {
     std::vector<TriangleSetup> flat = triangles;
     for (TriangleSetup& t : flat)
         for (double& d : t.depth) d = 0.5;
-    rasterize(flat, params, out);
+    rasterize_reference(flat, params, out);
 }
 
 // --- sample positions ---------------------------------------------------------------------------------------
@@ -366,6 +366,12 @@ std::vector<Mutant> build_catalogue() {
         replace(m.stages);
         list.push_back(std::move(m));
     };
+    // A fault in the reference rasterizer shows only on the reference renderer, the one that runs it.
+    auto add_reference = [&](const char* name, const char* stage, const char* symptom, auto&& replace) {
+        Mutant m{name, stage, symptom, PipelineStages{}, BuildingBlocks{}, RasterPath::reference};
+        replace(m.stages);
+        list.push_back(std::move(m));
+    };
     auto add_block = [&](const char* name, const char* stage, const char* symptom, auto&& replace) {
         Mutant m{name, stage, symptom, PipelineStages{}, BuildingBlocks{}};
         replace(m.stages, m.blocks);
@@ -383,10 +389,12 @@ std::vector<Mutant> build_catalogue() {
         [](PipelineStages& s) { s.setup = setup_discarding_sub_pixel; });
     add("y not flipped", "setup", "the image is upside down",
         [](PipelineStages& s) { s.setup = setup_without_y_flip; });
-    add("affine instead of perspective-correct", "rasterize", "attributes interpolate linearly in screen space",
-        [](PipelineStages& s) { s.rasterize = rasterize_affine; });
-    add("depth buffer initialised with numeric_limits<float>::min()", "rasterize", "every fragment fails the depth test",
-        [](PipelineStages& s) { s.rasterize = rasterize_with_depth_cleared_to_min; });
+    add_reference("affine instead of perspective-correct", "rasterize",
+                  "attributes interpolate linearly in screen space",
+                  [](PipelineStages& s) { s.reference_rasterize = rasterize_affine; });
+    add_reference("depth buffer initialised with numeric_limits<float>::min()", "rasterize",
+                  "every fragment fails the depth test",
+                  [](PipelineStages& s) { s.reference_rasterize = rasterize_with_depth_cleared_to_min; });
     add("wrong sample positions", "sample positions", "samples are half a pixel off",
         [](PipelineStages& s) { s.sample_offsets = sample_offsets_half_pixel_off; });
     add("integer-divided aspect ratio", "vertex", "the image is stretched horizontally",
@@ -412,14 +420,15 @@ std::vector<Mutant> build_catalogue() {
         [](PipelineStages& s) { s.clip = clip_with_strict_near_far; });
     add("NaN slips through the clip test", "clip", "a triangle with a NaN vertex reaches setup and covers samples",
         [](PipelineStages& s) { s.clip = clip_letting_nan_through; });
-    add("view depth interpolated linearly (w instead of 1/w)", "rasterize",
-        "barycentrics do not sum to 1 and depths bulge away from the camera",
-        [](PipelineStages& s) { s.rasterize = rasterize_with_linear_w; });
-    add("barycentrics evaluated at the pixel centre", "rasterize",
-        "samples near an edge extrapolate attributes (negative barycentrics)",
-        [](PipelineStages& s) { s.rasterize = rasterize_with_pixel_centre_barycentrics; });
-    add("no depth test (the first triangle drawn stays)", "rasterize", "draw order, not distance, decides visibility",
-        [](PipelineStages& s) { s.rasterize = rasterize_without_depth_test; });
+    add_reference("view depth interpolated linearly (w instead of 1/w)", "rasterize",
+                  "barycentrics do not sum to 1 and depths bulge away from the camera",
+                  [](PipelineStages& s) { s.reference_rasterize = rasterize_with_linear_w; });
+    add_reference("barycentrics evaluated at the pixel centre", "rasterize",
+                  "samples near an edge extrapolate attributes (negative barycentrics)",
+                  [](PipelineStages& s) { s.reference_rasterize = rasterize_with_pixel_centre_barycentrics; });
+    add_reference("no depth test (the first triangle drawn stays)", "rasterize",
+                  "draw order, not distance, decides visibility",
+                  [](PipelineStages& s) { s.reference_rasterize = rasterize_without_depth_test; });
     add_block("look-at basis not orthonormal", "look-at matrix", "the view shears when up is not perpendicular",
               [](PipelineStages& s, BuildingBlocks& b) {
                   b.look_at = look_at_with_raw_up;

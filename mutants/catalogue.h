@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "raster/pipeline/frame.h"
 #include "raster/pipeline/stages.h"
 #include "mutants/building_blocks.h"
 
@@ -17,6 +18,7 @@ struct Mutant {
     std::string symptom;    // what the bug does, in a sentence
     PipelineStages stages;  // the real pipeline with that stage faulty
     BuildingBlocks blocks;  // the real building blocks, or with the faulty one when the bug lives in a block
+    RasterPath path = RasterPath::tiled;  // the renderer that runs the faulty stage: reference for reference_rasterize
 };
 
 // Every faulty variant, in catalogue order. The list is built once.

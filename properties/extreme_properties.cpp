@@ -100,7 +100,7 @@ void check_vertices_exactly_on_the_near_plane_are_kept_with_depth_one(const Impl
         fail_case("a triangle with vertices on the near plane came back from clipping with " + std::to_string(polygon.count) +
                   " vertices" + (polygon.clipped ? ", marked clipped" : ""));
     std::vector<TriangleSetup> setups;
-    impl.stages.setup(polygon, 0, SetupParams{frame.width, frame.height, frame.snap_bits}, setups);
+    impl.stages.setup(polygon, 0, frame_params(frame.width, frame.height, frame.snap_bits), setups);
     const float on_near = static_cast<float>(1.0 / static_cast<double>(frame.volume.near));
     const double bound = depth_error_at_near(frame.volume.near, frame.volume.far);
     for (const TriangleSetup& s : setups)

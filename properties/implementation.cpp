@@ -6,11 +6,13 @@
 namespace raster::properties {
 
 const Implementation& real_implementation() {
-    static const Implementation real{"real", PipelineStages{}, mutants::BuildingBlocks{}};
+    static const Implementation real{"real", PipelineStages{}, mutants::BuildingBlocks{}, RasterPath::tiled};
     return real;
 }
 
-Implementation implementation_of(const mutants::Mutant& mutant) { return {mutant.name, mutant.stages, mutant.blocks}; }
+Implementation implementation_of(const mutants::Mutant& mutant) {
+    return {mutant.name, mutant.stages, mutant.blocks, mutant.path};
+}
 
 const Implementation& implementation_under_test() {
     static const Implementation chosen = [] {

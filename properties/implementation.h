@@ -14,6 +14,7 @@ struct Implementation {
     std::string name;                // "real", or the mutant's bug name
     PipelineStages stages;           // what render() runs
     mutants::BuildingBlocks blocks;  // matrix builders and the loader's transform chain
+    RasterPath path = RasterPath::tiled;  // the renderer whole-scene properties render with
 };
 
 // The real rasterizer: the default stages and blocks.

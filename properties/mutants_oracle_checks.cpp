@@ -44,9 +44,11 @@ Scene scene_of(const std::string& name) {
     return scene;
 }
 
-uint64_t genuine(const std::string& name, const PipelineStages& stages, int threads, std::string* reasons = nullptr) {
+uint64_t genuine(const std::string& name, const PipelineStages& stages, RasterPath path, int threads,
+                 std::string* reasons = nullptr) {
     oracle::ComparisonOptions options;
     options.threads = threads;
+    options.raster_path = path;
     const oracle::Comparison c = oracle::compare_scene(scene_of(name), options, stages);
     if (reasons)
         for (oracle::SampleClass k : {oracle::SampleClass::visibility, oracle::SampleClass::barycentrics,
@@ -72,9 +74,9 @@ std::vector<std::string> oracle_checks() {
 std::string run_oracle_check(const std::string& check, const Implementation& impl) {
     const std::string scene = check.substr(7);
     static std::map<std::string, uint64_t> baselines;
-    if (!baselines.count(scene)) baselines[scene] = genuine(scene, PipelineStages{}, 1);
+    if (!baselines.count(scene)) baselines[scene] = genuine(scene, PipelineStages{}, RasterPath::tiled, 1);
     std::string reasons;
-    const uint64_t found = genuine(scene, impl.stages, 1, &reasons);
+    const uint64_t found = genuine(scene, impl.stages, impl.path, 1, &reasons);
     if (found <= baselines[scene]) return "";
     return std::to_string(found) + " genuine disagreements with the oracle (" + reasons + "); the real pipeline has " +
            std::to_string(baselines[scene]);

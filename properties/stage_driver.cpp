@@ -71,7 +71,8 @@ reference::Point snapped(const Frame& frame, const glm::vec4& clip) {
 std::vector<TriangleSetup> set_up(const Implementation& impl, const Frame& frame,
                                   const std::vector<ClipTriangle>& triangles) {
     std::vector<TriangleSetup> setups;
-    const SetupParams params{frame.width, frame.height, frame.snap_bits};
+    FrameParams params = frame_params(frame.width, frame.height, frame.snap_bits);
+    params.clip = frame.volume;
     for (size_t i = 0; i < triangles.size(); ++i) {
         const ClipTriangle& t = triangles[i];
         const ClippedPolygon polygon = impl.stages.clip(t.v[0], t.v[1], t.v[2], frame.volume);
@@ -82,14 +83,11 @@ std::vector<TriangleSetup> set_up(const Implementation& impl, const Frame& frame
 
 VisibilityBuffer rasterize_setups(const Implementation& impl, const Frame& frame,
                                   const std::vector<TriangleSetup>& setups) {
-    RasterParams params;
-    params.width = frame.width;
-    params.height = frame.height;
-    params.snap_bits = frame.snap_bits;
-    params.sample_offsets = impl.stages.sample_offsets(frame.samples, frame.pattern);
+    FrameParams params =
+        frame_params(frame.width, frame.height, frame.snap_bits, impl.stages.sample_offsets(frame.samples, frame.pattern));
     params.threads = 1;
     VisibilityBuffer visibility;
-    impl.stages.rasterize(setups, params, visibility);
+    impl.stages.reference_rasterize(setups, params, visibility);
     return visibility;
 }
 
@@ -111,6 +109,7 @@ std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
 RenderResult render_with(const Implementation& impl, const Scene& scene) {
     RenderOptions options;
     options.threads = 1;
+    options.path = impl.path;
     return render(scene, options, impl.stages);
 }
 

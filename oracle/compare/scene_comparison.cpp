@@ -11,15 +11,11 @@
 #include "raster/pipeline/sample_pattern.h"
 #include "raster/pipeline/shade.h"
 #include "raster/pipeline/vertex_stage.h"
+#include "raster/core/stopwatch.h"
 
 namespace raster::oracle {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double milliseconds_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // The real vertex stage (one overload of run_vertex_stage), to tell whether `stages` replaced it.
 constexpr TransformedScene (*kRealVertexStage)(const Scene&, const VertexStageNeeds&) = run_vertex_stage;
@@ -36,6 +32,7 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
 
     RenderOptions render_options;
     render_options.threads = options.threads;
+    render_options.path = options.raster_path;
     out.raster = render(scene, render_options, stages);
     out.raster_ms = out.raster.stats.ms_total;
 

@@ -19,6 +19,7 @@ namespace raster::oracle {
 struct ComparisonOptions {
     OracleMode mode = OracleMode::robust;
     int threads = 0;  // 0 = all cores, for both renderers and the comparator; results do not depend on it
+    RasterPath raster_path = RasterPath::tiled;  // raster's renderer (a mutant of the reference rasterizer: reference)
 };
 
 struct Comparison {

@@ -13,17 +13,13 @@
 #include "raster/pipeline/camera_rays.h"
 #include "raster/core/parallel.h"
 #include "raster/pipeline/sample_pattern.h"
+#include "raster/core/stopwatch.h"
 
 namespace raster::oracle {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 constexpr size_t kPacketSize = 8;  // RTCRayHit8
-
-double milliseconds_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 // Every scene vertex in view space, indexed like geometry.clip (global vertex indices).
 std::vector<glm::vec3> view_space_vertices(const Scene& scene, const TransformedScene& geometry) {

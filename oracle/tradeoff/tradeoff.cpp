@@ -13,17 +13,18 @@
 #include "oracle/reference/reference_geometry.h"
 #include "raster/core/conventions.h"
 #include "raster/core/parallel.h"
-#include "raster/pipeline/reference_rasterizer.h"
+#include "raster/pipeline/front_end.h"
+#include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/render.h"
 #include "raster/pipeline/resolve.h"
 #include "raster/pipeline/sample_pattern.h"
 #include "raster/pipeline/shade.h"
 #include "raster/scene/validation.h"
+#include "raster/core/stopwatch.h"
 
 namespace raster::oracle {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // Bytes of one sample of a visibility buffer: triangle id, barycentrics, view depth.
 constexpr uint64_t sizeof_visibility_sample = sizeof(uint32_t) + sizeof(glm::vec3) + sizeof(float);
@@ -87,10 +88,11 @@ std::vector<double> exact_triangle_areas(const Scene& scene, const TransformedSc
 
 std::vector<uint64_t> covered_sample_counts(const Scene& scene, const TransformedScene& geometry, int threads) {
     RenderStats stats;
-    const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, threads, PipelineStages{}, stats);
-    const int fixed_bits = fixed_bits_for(scene.settings.snap_bits);
-    const FixedSampleOffsets offsets =
-        fixed_sample_offsets(sample_offsets(scene.settings.samples, scene.settings.pattern), fixed_bits);
+    const FrameParams frame =
+        frame_params_for(scene, sample_offsets(scene.settings.samples, scene.settings.pattern), threads);
+    const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, frame, PipelineStages{}, stats);
+    const int fixed_bits = frame.fixed_bits;
+    const FixedSampleOffsets& offsets = frame.fixed_offsets;
     std::vector<uint64_t> per_setup(setups.size(), 0);
     parallel_for(setups.size(), threads,
                  [&](size_t i) { per_setup[i] = covered_samples(setups[i], offsets, fixed_bits); });

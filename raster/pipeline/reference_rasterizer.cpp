@@ -1,13 +1,14 @@
-// Coverage and depth: band-parallel traversal of each triangle's bounding box with incremental 64-bit edge
+// The reference rasterizer: band-parallel traversal of each triangle's bounding box with incremental 64-bit edge
 // functions, then a pass that turns each winning sample into original-triangle barycentrics.
 #include "raster/pipeline/reference_rasterizer.h"
 
 #include <algorithm>
 #include <cstdint>
 
-#include "raster/pipeline/camera_rays.h"
 #include "raster/core/conventions.h"
 #include "raster/core/parallel.h"
+#include "raster/pipeline/camera_rays.h"
+#include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/sample_pattern.h"
 
 namespace raster {
@@ -22,13 +23,6 @@ struct DepthPlanes {
     uint32_t* winner;
     float* depth;
 };
-
-inline void depth_test(DepthPlanes& planes, size_t at, float depth, uint32_t index) {
-    if (planes.winner[at] == kNoTriangle || depth > planes.depth[at]) {
-        planes.depth[at] = depth;
-        planes.winner[at] = index;
-    }
-}
 
 // Rasterizes every triangle that touches rows [row_begin, row_end) into the depth planes. With one sample per
 // pixel the edge functions are stepped at the sample itself; with several, each sample adds its own constant
@@ -60,13 +54,15 @@ void rasterize_band(const std::vector<TriangleSetup>& triangles, int row_begin, 
                         static_cast<size_t>(samples);
             for (int px = t.min_x; px <= t.max_x; ++px) {
                 if (kSingleSample) {
-                    if ((e0 | e1 | e2) >= 0) depth_test(planes, at, depth.at(e1 - t.bias[1], e2 - t.bias[2]), index);
+                    if ((e0 | e1 | e2) >= 0)
+                        depth_test(planes.winner, planes.depth, at, depth.at(e1 - t.bias[1], e2 - t.bias[2]), index);
                     ++at;
                 } else {
                     for (int s = 0; s < samples; ++s, ++at) {
                         const int64_t* delta = &sample_delta[static_cast<size_t>(s) * 3];
                         const int64_t s0 = e0 + delta[0], s1 = e1 + delta[1], s2 = e2 + delta[2];
-                        if ((s0 | s1 | s2) >= 0) depth_test(planes, at, depth.at(s1 - t.bias[1], s2 - t.bias[2]), index);
+                        if ((s0 | s1 | s2) >= 0)
+                            depth_test(planes.winner, planes.depth, at, depth.at(s1 - t.bias[1], s2 - t.bias[2]), index);
                     }
                 }
                 e0 += step_x[0];
@@ -87,16 +83,12 @@ void resolve_band(const std::vector<TriangleSetup>& triangles, int row_begin, in
             for (int s = 0; s < samples; ++s, ++at) {
                 const uint32_t winner = out.triangle[at];
                 if (winner == kNoTriangle) {
-                    out.bary[at] = glm::vec3(0.0f);
-                    out.view_depth[at] = 0.0f;
+                    store_empty_sample(out, at);
                     continue;
                 }
                 const TriangleSetup& t = triangles[winner];
                 const FixedPosition sample = sample_fixed_position(px, py, s, offsets, fixed_bits);
-                const SampleHit hit = interpolate_hit(t, sample.x, sample.y);
-                out.triangle[at] = t.triangle_id;
-                out.bary[at] = hit.bary;
-                out.view_depth[at] = hit.view_depth;
+                store_sample(out, at, t.triangle_id, interpolate_hit(t, sample.x, sample.y));
             }
         }
     }
@@ -104,19 +96,19 @@ void resolve_band(const std::vector<TriangleSetup>& triangles, int row_begin, in
 
 }  // namespace
 
-void rasterize(const std::vector<TriangleSetup>& triangles, const RasterParams& params, VisibilityBuffer& out) {
-    const int samples = static_cast<int>(params.sample_offsets.size());
-    out.resize(params.width, params.height, samples);
-    const int fixed_bits = fixed_bits_for(params.snap_bits);
-    const FixedSampleOffsets offsets = fixed_sample_offsets(params.sample_offsets, fixed_bits);
+void rasterize_reference(const std::vector<TriangleSetup>& triangles, const FrameParams& frame, VisibilityBuffer& out) {
+    const int samples = frame.samples();
+    out.resize(frame.width, frame.height, samples);
     const DepthPlanes planes{out.triangle.data(), out.view_depth.data()};
-    const size_t bands = static_cast<size_t>((params.height + kBandRows - 1) / kBandRows);
-    parallel_for(bands, params.threads, [&](size_t band) {
+    const size_t bands = static_cast<size_t>((frame.height + kBandRows - 1) / kBandRows);
+    parallel_for(bands, frame.threads, [&](size_t band) {
         const int row_begin = static_cast<int>(band) * kBandRows;
-        const int row_end = std::min(params.height, row_begin + kBandRows);
-        if (samples == 1) rasterize_band<true>(triangles, row_begin, row_end, params.width, fixed_bits, offsets, planes);
-        else rasterize_band<false>(triangles, row_begin, row_end, params.width, fixed_bits, offsets, planes);
-        resolve_band(triangles, row_begin, row_end, fixed_bits, offsets, out);
+        const int row_end = std::min(frame.height, row_begin + kBandRows);
+        if (samples == 1)
+            rasterize_band<true>(triangles, row_begin, row_end, frame.width, frame.fixed_bits, frame.fixed_offsets, planes);
+        else
+            rasterize_band<false>(triangles, row_begin, row_end, frame.width, frame.fixed_bits, frame.fixed_offsets, planes);
+        resolve_band(triangles, row_begin, row_end, frame.fixed_bits, frame.fixed_offsets, out);
     });
 }
 

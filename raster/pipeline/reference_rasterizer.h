@@ -1,82 +1,19 @@
-// Coverage and depth: fixed-point edge functions per sample, a reversed-Z depth test, and the visibility buffer.
+// The reference rasterizer: every triangle's bounding box sample by sample over the whole frame, in bands of rows.
+// Plain enough to read as the definition of coverage and depth that the tiled renderer is checked against.
 #pragma once
 
-#include <cmath>
 #include <vector>
 
-#include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
-
+#include "raster/pipeline/frame_params.h"
 #include "raster/pipeline/setup.h"
 #include "raster/pipeline/visibility_buffer.h"
 
 namespace raster {
 
-struct RasterParams {
-    int width = 0;
-    int height = 0;
-    int snap_bits = 8;
-    std::vector<glm::vec2> sample_offsets;  // from sample_pattern.h; their count is the samples per pixel
-    int threads = 0;                        // 0 = all cores
-};
-
 // Rasterizes the triangles in order into `out` (resized to width x height x samples). For each sample the
 // nearest triangle wins; on an exact depth tie the one drawn first stays. Then each visible sample gets its
 // perspective-correct barycentrics in the original triangle and its view depth. The result is the same for any
 // thread count: rows are split into bands and each band is processed by one thread, triangles in order.
-void rasterize(const std::vector<TriangleSetup>& triangles, const RasterParams& params, VisibilityBuffer& out);
-
-// The depth key of a covered sample (setup.h depth_key; larger is nearer), affine in screen space:
-// d = d0 + (E1 (d1 - d0) + E2 (d2 - d0)) / area2, evaluated in double from the exact edge values so that every
-// path (reference, tiled) gets the same float; a fixed24 key is rounded to its integer level first.
-struct DepthPlane {
-    double d0, d10_over_area, d20_over_area;
-    bool fixed24;
-    explicit DepthPlane(const TriangleSetup& t)
-        : d0(t.depth[0]),
-          d10_over_area((t.depth[1] - d0) / double(t.area2)),
-          d20_over_area((t.depth[2] - d0) / double(t.area2)),
-          fixed24(t.depth_fixed24) {}
-    // The plane's value in double, before the key's rounding; e1 and e2 are exact edge values (bias removed).
-    double value(int64_t e1, int64_t e2) const {
-        return d0 + static_cast<double>(e1) * d10_over_area + static_cast<double>(e2) * d20_over_area;
-    }
-    // The key at a sample.
-    float at(int64_t e1, int64_t e2) const {
-        const double d = value(e1, e2);
-        return static_cast<float>(fixed24 ? std::floor(d + 0.5) : d);
-    }
-};
-
-// Where a visible sample is on its original triangle: perspective-correct barycentrics and view depth.
-struct SampleHit {
-    glm::vec3 bary;
-    float view_depth;
-};
-
-// Screen-space barycentrics l_i = E_i / area2, perspective-corrected by 1/w (m_i = l_i / w_i, normalised), then
-// mapped through the setup vertices' barycentrics in the original triangle; view depth = 1 / sum(l_i / w_i).
-// An affine setup (Interpolation::affine) skips the correction: barycentrics l_i / sum(l), view depth
-// sum(l_i w_i) / sum(l), both linear in screen space.
-inline SampleHit interpolate_hit(const TriangleSetup& t, int64_t X, int64_t Y) {
-    const double inv_area = 1.0 / static_cast<double>(t.area2);
-    double weight[3], total = 0.0, affine_depth = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        const double l = static_cast<double>(t.a[i] * X + t.b[i] * Y + t.c[i]) * inv_area;
-        weight[i] = t.affine ? l : l * static_cast<double>(t.inv_w[i]);
-        if (t.affine) affine_depth += l / static_cast<double>(t.inv_w[i]);
-        total += weight[i];
-    }
-    glm::dvec3 bary(0.0);
-    for (int i = 0; i < 3; ++i) bary += (weight[i] / total) * glm::dvec3(t.bary[i]);
-    return {glm::vec3(bary), static_cast<float>(t.affine ? affine_depth / total : 1.0 / total)};
-}
-
-// The exact coverage test of one sample at fixed-point position (X, Y), shared by the rasterizer and its tests.
-inline bool covers(const TriangleSetup& t, int64_t X, int64_t Y) {
-    for (int i = 0; i < 3; ++i)
-        if (t.a[i] * X + t.b[i] * Y + t.c[i] + t.bias[i] < 0) return false;
-    return true;
-}
+void rasterize_reference(const std::vector<TriangleSetup>& triangles, const FrameParams& frame, VisibilityBuffer& out);
 
 }  // namespace raster

@@ -22,10 +22,9 @@ void PixelResolver::one_triangle(uint32_t triangle, const glm::vec3& bary, uint8
 
 void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const {
     // A pixel whose samples all show the same triangle (or nothing) is the common case: one shade, no search.
-    bool uniform = true;
-    for (int s = 1; s < samples_ && uniform; ++s) uniform = triangle[s] == triangle[0];
+    const bool uniform = is_uniform(triangle, samples_);
     if (uniform && triangle[0] == kNoTriangle) return background(out);
-    if (uniform && (params_.msaa || samples_ == 1)) return one_triangle(triangle[0], bary[0], out);
+    if (uniform && shades_uniform_pixels_once()) return one_triangle(triangle[0], bary[0], out);
     glm::vec3 sum(0.0f);
     int covered = 0;
     for (int s = 0; s < samples_; ++s) {
@@ -36,9 +35,7 @@ void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uin
             continue;
         }
         // MSAA: only the first sample of each triangle shades, for all of that triangle's samples.
-        bool seen = false;
-        for (int earlier = 0; earlier < s && !seen; ++earlier) seen = triangle[earlier] == triangle[s];
-        if (seen) continue;
+        if (!first_of_its_triangle(triangle, s)) continue;
         int count = 1;
         for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
         sum += static_cast<float>(count) * shader_.shade(triangle[s], bary[s]);
@@ -51,12 +48,16 @@ void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uin
     if (params_.alpha) out[3] = to_byte(static_cast<float>(covered) / static_cast<float>(samples_));
 }
 
+void size_image(Image& image, int width, int height, int channels) {
+    image.width = width;
+    image.height = height;
+    image.channels = channels;
+    image.pixels.resize(static_cast<size_t>(width) * height * channels);
+}
+
 void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image) {
     const PixelResolver resolver(shader, params, visibility.samples);
-    image.width = visibility.width;
-    image.height = visibility.height;
-    image.channels = resolver.channels();
-    image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
+    size_image(image, visibility.width, visibility.height, resolver.channels());
     parallel_for(static_cast<size_t>(visibility.height), params.threads, [&](size_t row) {
         const int y = static_cast<int>(row);
         for (int x = 0; x < visibility.width; ++x) {

@@ -26,9 +26,11 @@ public:
     int channels() const { return params_.alpha ? 4 : 3; }
     // `triangle` and `bary` hold the pixel's `samples` entries in pattern order; writes channels() bytes to out.
     void resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const;
-    // The two cases resolve() answers without looking at every sample: no sample covered, and (with MSAA or one
-    // sample) every sample on one triangle, shaded once at `bary`, the pattern's first sample.
+    // The two cases resolve() answers without looking at every sample: no sample covered, and (when
+    // shades_uniform_pixels_once: with MSAA or one sample) every sample on one triangle, shaded once at `bary`,
+    // the pattern's first sample.
     void background(uint8_t* out) const { std::copy(background_, background_ + channels(), out); }
+    bool shades_uniform_pixels_once() const { return params_.msaa || samples_ == 1; }
     void one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const;
 
 private:
@@ -37,6 +39,23 @@ private:
     int samples_;
     uint8_t background_[4];
 };
+
+// True when the pixel's n samples all hold the same value (one triangle, or all empty).
+inline bool is_uniform(const uint32_t* samples, int n) {
+    for (int s = 1; s < n; ++s)
+        if (samples[s] != samples[0]) return false;
+    return true;
+}
+
+// True when sample s is the first of the pixel's samples to show its triangle: the one MSAA shades.
+inline bool first_of_its_triangle(const uint32_t* triangle, int s) {
+    for (int earlier = 0; earlier < s; ++earlier)
+        if (triangle[earlier] == triangle[s]) return false;
+    return true;
+}
+
+// Sizes `image` for width x height pixels of `channels` bytes, reusing its storage when it fits.
+void size_image(Image& image, int width, int height, int channels);
 
 // The colour image. Uncovered samples take the background colour (or, with alpha, no part in the colour).
 // MSAA shades each triangle in a pixel once, at the first of its samples in pattern order (always inside the

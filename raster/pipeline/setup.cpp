@@ -43,12 +43,6 @@ void round_edges_to_float(TriangleSetup& t) {
     }
 }
 
-// The side planes' factor: 1 for full clipping, the guard band's for guard-band clipping (conventions.h).
-double side_factor(const RenderSettings& settings) {
-    if (settings.modes.clipping != Clipping::guard_band) return 1.0;
-    return guard_band_factor(settings.width, settings.height, fixed_bits_for(settings.snap_bits));
-}
-
 }  // namespace
 
 double depth_key(double reversed_z, DepthFormat format) {
@@ -59,46 +53,33 @@ double depth_key(double reversed_z, DepthFormat format) {
     }
 }
 
-SetupParams setup_params_for(const RenderSettings& settings) {
-    SetupParams params{settings.width, settings.height, settings.snap_bits};
-    params.side = side_factor(settings);
-    params.edges = settings.modes.edges;
-    params.interpolation = settings.modes.interpolation;
-    params.depth = settings.modes.depth;
-    return params;
-}
-
-ClipVolume clip_volume_for(const Camera& camera, const RenderSettings& settings) {
-    return ClipVolume{camera.near, camera.far, side_factor(settings)};
-}
-
 bool faces_front(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
     const double ax = a.x, ay = a.y, aw = a.w, bx = b.x, by = b.y, bw = b.w, cx = c.x, cy = c.y, cw = c.w;
     const double determinant = ax * (by * cw - bw * cy) - ay * (bx * cw - bw * cx) + aw * (bx * cy - by * cx);
     return determinant > 0.0;
 }
 
-int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const SetupParams& params,
+int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const FrameParams& frame,
                   std::vector<TriangleSetup>& out) {
     if (polygon.count < 3) return 0;
-    const int fixed_bits = fixed_bits_for(params.snap_bits);
-    const int64_t extent_x = int64_t{params.width} << fixed_bits;
-    const int64_t extent_y = int64_t{params.height} << fixed_bits;
+    const int fixed_bits = frame.fixed_bits;
+    const int64_t extent_x = int64_t{frame.width} << fixed_bits;
+    const int64_t extent_y = int64_t{frame.height} << fixed_bits;
     // The snapped range: the viewport [0, extent], widened on each side by (side - 1) / 2 extents (guard band).
-    const double margin = (params.side - 1.0) * 0.5;
+    const double margin = (frame.clip.side - 1.0) * 0.5;
     const int64_t low_x = -static_cast<int64_t>(margin * static_cast<double>(extent_x)), high_x = extent_x - low_x;
     const int64_t low_y = -static_cast<int64_t>(margin * static_cast<double>(extent_y)), high_y = extent_y - low_y;
 
-    const double snap_scale = static_cast<double>(int64_t{1} << params.snap_bits);
-    const int shift = fixed_bits - params.snap_bits;
+    const double snap_scale = static_cast<double>(int64_t{1} << frame.snap_bits);
+    const int shift = fixed_bits - frame.snap_bits;
     ScreenVertex screen[kMaxClippedVertices];
     for (int i = 0; i < polygon.count; ++i) {
         const glm::vec4& p = polygon.vertices[i].position;
         const double inv_w = 1.0 / static_cast<double>(p.w);  // w >= near > 0 after clipping
         const glm::dvec2 position = screen_from_ndc(static_cast<double>(p.x) * inv_w, static_cast<double>(p.y) * inv_w,
-                                                    params.width, params.height);
+                                                    frame.width, frame.height);
         screen[i] = {snap(position.x, snap_scale, shift, low_x, high_x), snap(position.y, snap_scale, shift, low_y, high_y),
-                     depth_key(static_cast<double>(p.z) * inv_w, params.depth), static_cast<float>(inv_w),
+                     depth_key(static_cast<double>(p.z) * inv_w, frame.depth), static_cast<float>(inv_w),
                      polygon.vertices[i].bary};
     }
 
@@ -116,8 +97,8 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Set
         TriangleSetup setup;
         setup.triangle_id = triangle_id;
         setup.area2 = area2;
-        setup.affine = params.interpolation == Interpolation::affine;
-        setup.depth_fixed24 = params.depth == DepthFormat::fixed24;
+        setup.affine = frame.interpolation == Interpolation::affine;
+        setup.depth_fixed24 = frame.depth == DepthFormat::fixed24;
         for (int i = 0; i < 3; ++i) {
             setup.x[i] = v[i]->x;
             setup.y[i] = v[i]->y;
@@ -134,7 +115,7 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Set
             setup.c[i] = dy * setup.x[s] - dx * setup.y[s];
             setup.bias[i] = is_top_left(dx, dy) ? 0 : -1;
         }
-        if (params.edges == EdgeArithmetic::float32) round_edges_to_float(setup);
+        if (frame.edges == EdgeArithmetic::float32) round_edges_to_float(setup);
         const int64_t min_x = std::min({setup.x[0], setup.x[1], setup.x[2]});
         const int64_t max_x = std::max({setup.x[0], setup.x[1], setup.x[2]});
         const int64_t min_y = std::min({setup.y[0], setup.y[1], setup.y[2]});
@@ -143,8 +124,8 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Set
         // p <= max / 2^fixed_bits and p + 1 > min / 2^fixed_bits.
         setup.min_x = static_cast<int>(std::max<int64_t>(min_x >> fixed_bits, 0));
         setup.min_y = static_cast<int>(std::max<int64_t>(min_y >> fixed_bits, 0));
-        setup.max_x = static_cast<int>(std::min<int64_t>(max_x >> fixed_bits, params.width - 1));
-        setup.max_y = static_cast<int>(std::min<int64_t>(max_y >> fixed_bits, params.height - 1));
+        setup.max_x = static_cast<int>(std::min<int64_t>(max_x >> fixed_bits, frame.width - 1));
+        setup.max_y = static_cast<int>(std::min<int64_t>(max_y >> fixed_bits, frame.height - 1));
         if (setup.min_x > setup.max_x || setup.min_y > setup.max_y) continue;
         out.push_back(setup);
         ++appended;

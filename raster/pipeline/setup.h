@@ -8,21 +8,11 @@
 #include <glm/vec4.hpp>
 
 #include "raster/pipeline/clip.h"
+#include "raster/pipeline/frame_params.h"
 #include "raster/scene/precision_modes.h"
 #include "raster/scene/scene.h"
 
 namespace raster {
-
-// Where setup puts things: the image size and the fixed-point precision (see conventions.h).
-struct SetupParams {
-    int width = 0;
-    int height = 0;
-    int snap_bits = 8;
-    double side = 1.0;  // the clip volume's side factor: vertices are kept within it (guard band), see conventions.h
-    EdgeArithmetic edges = EdgeArithmetic::fixed;
-    Interpolation interpolation = Interpolation::perspective;
-    DepthFormat depth = DepthFormat::reversed_z;
-};
 
 // One screen-space triangle, ready to rasterize. Coordinates are on the grid of 1/2^fixed_bits pixel.
 // Edge i is the edge opposite vertex i; E_i(X, Y) = a[i] * X + b[i] * Y + c[i] is > 0 inside, and equals
@@ -50,14 +40,11 @@ struct TriangleSetup {
 inline constexpr double kFixed24Levels = 16777215.0;
 double depth_key(double reversed_z, DepthFormat format);
 
-// Setup's parameters for a scene's settings (image, snap bits, modes, the guard band factor when it clips so).
-SetupParams setup_params_for(const RenderSettings& settings);
-// The clip volume for a camera and settings (near, far, and the side factor of the clipping mode).
-ClipVolume clip_volume_for(const Camera& camera, const RenderSettings& settings);
-
-// Projects, snaps and triangulates a clipped polygon (as a fan from its first vertex), appending one setup per
-// non-degenerate triangle to `out` (back-face culling is faces_front's, before clipping). Returns the number appended.
-int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const SetupParams& params,
+// Projects, snaps (to frame.snap_bits, clamped to the viewport or to frame.clip's guard band) and triangulates a
+// clipped polygon as a fan from its first vertex, in the frame's edge arithmetic, interpolation and depth format,
+// appending one setup per non-degenerate triangle to `out` (back-face culling is faces_front's, before clipping).
+// Returns the number appended.
+int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const FrameParams& frame,
                   std::vector<TriangleSetup>& out);
 
 // Back-face culling is decided once per scene triangle, before clipping, from its clip-space vertices: the sign of

@@ -1,73 +1,21 @@
-// The fast path: bins, per-tile sample planes, block-level trivial accept/reject, shading per tile.
+// The tiled renderer: bins, per-tile sample planes, 8x8 block accept/reject with hierarchical Z, shading per tile.
 #include "raster/pipeline/tiled_renderer.h"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <limits>
-#include <atomic>
-#include <chrono>
 
 #include "raster/core/parallel.h"
-#include "raster/pipeline/reference_rasterizer.h"
+#include "raster/core/stopwatch.h"
+#include "raster/pipeline/front_end.h"
+#include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/resolve.h"
-#include "raster/pipeline/sample_pattern.h"
+#include "raster/pipeline/tile_bins.h"
 
 namespace raster {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// The tiles of the frame and, for each, the setups that may cover one of its samples, in draw order.
-struct Bins {
-    int tiles_x = 0, tiles_y = 0;
-    std::vector<std::vector<uint32_t>>& setups;  // the workspace's lists, reused frame to frame
-};
-
-// Smallest and largest value of an edge function over the sample positions of the pixel rectangle
-// [x0, x1] x [y0, y1] (inclusive), which lie in [x0 << F + min offset, x1 << F + max offset] and likewise in y.
-struct EdgeRange {
-    int64_t min, max;
-};
-
-struct SampleBounds {
-    int64_t min_x, max_x, min_y, max_y;  // extreme sample offsets inside a pixel, fixed point
-};
-
-inline EdgeRange edge_range(const TriangleSetup& t, int i, int x0, int x1, int y0, int y1, int fixed_bits,
-                            const SampleBounds& bounds) {
-    const int64_t lo_x = (int64_t{x0} << fixed_bits) + bounds.min_x, hi_x = (int64_t{x1} << fixed_bits) + bounds.max_x;
-    const int64_t lo_y = (int64_t{y0} << fixed_bits) + bounds.min_y, hi_y = (int64_t{y1} << fixed_bits) + bounds.max_y;
-    const int64_t base = t.c[i] + t.bias[i];
-    const int64_t ax_lo = t.a[i] * lo_x, ax_hi = t.a[i] * hi_x, by_lo = t.b[i] * lo_y, by_hi = t.b[i] * hi_y;
-    return {base + std::min(ax_lo, ax_hi) + std::min(by_lo, by_hi), base + std::max(ax_lo, ax_hi) + std::max(by_lo, by_hi)};
-}
-
-Bins bin_setups(const std::vector<TriangleSetup>& setups, int width, int height, int fixed_bits,
-                const SampleBounds& bounds, std::vector<std::vector<uint32_t>>& lists) {
-    Bins bins{(width + kTileSize - 1) / kTileSize, (height + kTileSize - 1) / kTileSize, lists};
-    bins.setups.resize(static_cast<size_t>(bins.tiles_x) * bins.tiles_y);
-    for (std::vector<uint32_t>& list : bins.setups) list.clear();
-    for (uint32_t index = 0; index < setups.size(); ++index) {
-        const TriangleSetup& t = setups[index];
-        const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
-        const int ty0 = t.min_y / kTileSize, ty1 = t.max_y / kTileSize;
-        const bool single_tile = tx0 == tx1 && ty0 == ty1;
-        for (int ty = ty0; ty <= ty1; ++ty)
-            for (int tx = tx0; tx <= tx1; ++tx) {
-                if (!single_tile) {  // skip tiles of the bounding box that an edge keeps entirely outside
-                    const int x0 = std::max(t.min_x, tx * kTileSize), x1 = std::min(t.max_x, tx * kTileSize + kTileSize - 1);
-                    const int y0 = std::max(t.min_y, ty * kTileSize), y1 = std::min(t.max_y, ty * kTileSize + kTileSize - 1);
-                    bool outside = false;
-                    for (int i = 0; i < 3 && !outside; ++i)
-                        outside = edge_range(t, i, x0, x1, y0, y1, fixed_bits, bounds).max < 0;
-                    if (outside) continue;
-                }
-                bins.setups[static_cast<size_t>(ty) * bins.tiles_x + tx].push_back(index);
-            }
-    }
-    return bins;
-}
 
 // Hierarchical Z: for each 8x8 block of the tile, the smallest depth key stored in it (-inf while
 // any sample may be empty). A triangle whose key cannot exceed that bound anywhere in the block loses every depth
@@ -99,19 +47,18 @@ struct TileScratch {
 
 struct TileJob {
     const std::vector<TriangleSetup>& setups;
-    const FixedSampleOffsets& offsets;
-    const SampleBounds& bounds;
-    int fixed_bits;
-    int width, height, samples;
-    bool hierarchical_z;
+    const FrameParams& frame;
+    const FixedSampleOffsets& offsets;  // frame.fixed_offsets
+    int fixed_bits;                     // frame.fixed_bits
+    int width, height, samples;         // frame.width, frame.height, frame.samples()
 };
 
 // The largest value of a triangle's depth plane over the sample positions of a pixel rectangle: the plane is
 // affine, so it is at one of the rectangle's corners (extrapolated beyond the triangle, which only raises it).
 inline double max_key_over(const TriangleSetup& t, const DepthPlane& depth, int x0, int x1, int y0, int y1, int F,
-                           const SampleBounds& bounds) {
-    const int64_t xs[2] = {(int64_t{x0} << F) + bounds.min_x, (int64_t{x1} << F) + bounds.max_x};
-    const int64_t ys[2] = {(int64_t{y0} << F) + bounds.min_y, (int64_t{y1} << F) + bounds.max_y};
+                           const SampleExtent& extent) {
+    const int64_t xs[2] = {(int64_t{x0} << F) + extent.min_x, (int64_t{x1} << F) + extent.max_x};
+    const int64_t ys[2] = {(int64_t{y0} << F) + extent.min_y, (int64_t{y1} << F) + extent.max_y};
     double largest = -std::numeric_limits<double>::infinity();
     for (int64_t X : xs)
         for (int64_t Y : ys)
@@ -176,7 +123,7 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
             const int block_x1 = std::min(x1, (bx / kBlockSize + 1) * kBlockSize - 1);
             bool reject = false, accept = true;
             for (int i = 0; i < 3; ++i) {
-                const EdgeRange range = edge_range(t, i, bx, block_x1, by, block_y1, F, job.bounds);
+                const EdgeRange range = edge_range(t, i, bx, block_x1, by, block_y1, F, job.frame.extent);
                 reject = reject || range.max < 0;
                 accept = accept && range.min >= 0;
             }
@@ -186,10 +133,10 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
             const int block_x0 = bx / kBlockSize * kBlockSize, block_y0 = by / kBlockSize * kBlockSize;
             const size_t block = static_cast<size_t>((block_y0 - tile_y) / kBlockSize) * kBlocksPerTileSide +
                                  static_cast<size_t>((block_x0 - tile_x) / kBlockSize);
-            if (job.hierarchical_z) {
+            if (job.frame.hierarchical_z) {
                 block_far = &scratch.block_far[block];
                 filled_before = scratch.block_filled[block];
-                const double nearest = max_key_over(t, depth, bx, block_x1, by, block_y1, F, job.bounds);
+                const double nearest = max_key_over(t, depth, bx, block_x1, by, block_y1, F, job.frame.extent);
                 if (nearest + key_rounding_margin(nearest, depth.fixed24) <= *block_far) {  // all hidden
                     ++scratch.hidden_blocks;
                     continue;
@@ -209,15 +156,10 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
                     if (!covered[j]) continue;
                     const int64_t e1 = base[1] + scratch.row_offset[1][j] - t.bias[1];
                     const int64_t e2 = base[2] + scratch.row_offset[2][j] - t.bias[2];
-                    const float d = depth.at(e1, e2);
-                    const size_t at = row_start + j;
-                    const bool empty = scratch.winner[at] == kNoTriangle;
-                    if (empty || d > scratch.depth[at]) {
-                        scratch.depth[at] = d;
-                        scratch.winner[at] = index;
-                        wrote = true;
-                        newly_filled += empty;
-                    }
+                    const DepthTestResult test =
+                        depth_test(scratch.winner.data(), scratch.depth.data(), row_start + j, depth.at(e1, e2), index);
+                    wrote = wrote || test.written;
+                    newly_filled += test.was_empty;
                 }
             }
             if (block_far && wrote) {
@@ -250,13 +192,12 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
             const size_t first = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * S;
             if (!visibility) {  // the common pixels, answered without per-sample bookkeeping
                 const uint32_t winner = scratch.winner[first];
-                bool uniform = true;
-                for (int s = 1; s < S && uniform; ++s) uniform = scratch.winner[first + s] == winner;
+                const bool uniform = is_uniform(&scratch.winner[first], S);
                 if (uniform && winner == kNoTriangle) {
                     resolver.background(image.at(px, py));
                     continue;
                 }
-                if (uniform && (msaa || S == 1)) {
+                if (uniform && resolver.shades_uniform_pixels_once()) {
                     const TriangleSetup& t = job.setups[winner];
                     const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[0],
                                                                   (int64_t{py} << F) + job.offsets.y[0]);
@@ -270,12 +211,7 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                 if (winner == kNoTriangle) {
                     scratch.pixel_triangle[s] = kNoTriangle;
                     scratch.pixel_bary[s] = glm::vec3(0.0f);
-                    if (visibility) {
-                        const size_t at = visibility->index(px, py, s);
-                        visibility->triangle[at] = kNoTriangle;
-                        visibility->bary[at] = glm::vec3(0.0f);
-                        visibility->view_depth[at] = 0.0f;
-                    }
+                    if (visibility) store_empty_sample(*visibility, visibility->index(px, py, s));
                     continue;
                 }
                 ++covered;
@@ -283,20 +219,11 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                 scratch.pixel_triangle[s] = t.triangle_id;
                 // MSAA shades only the first sample of each triangle: the others need no barycentrics unless
                 // the visibility buffer is kept.
-                bool needed = true;
-                if (msaa && !visibility)
-                    for (int earlier = 0; earlier < s && needed; ++earlier)
-                        needed = scratch.pixel_triangle[earlier] != t.triangle_id;
-                if (!needed) continue;
+                if (msaa && !visibility && !first_of_its_triangle(scratch.pixel_triangle.data(), s)) continue;
                 const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[s],
                                                               (int64_t{py} << F) + job.offsets.y[s]);
                 scratch.pixel_bary[s] = hit.bary;
-                if (visibility) {
-                    const size_t at = visibility->index(px, py, s);
-                    visibility->triangle[at] = t.triangle_id;
-                    visibility->bary[at] = hit.bary;
-                    visibility->view_depth[at] = hit.view_depth;
-                }
+                if (visibility) store_sample(*visibility, visibility->index(px, py, s), t.triangle_id, hit);
             }
             resolver.resolve(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image.at(px, py));
         }
@@ -306,37 +233,25 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
 
 }  // namespace
 
-void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderResult& result,
-                       const PipelineStages& stages) {
+void render_tiled_into(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
+                       RenderResult& result) {
     const auto start = Clock::now();
     const RenderSettings& settings = scene.settings;
-    result.stats = RenderStats{};
+    const FrontEnd front = run_front_end(scene, options, stages, result);
+    const FrameParams& frame = front.frame;
     RenderStats& stats = result.stats;
 
-    const TransformedScene geometry = run_vertex_stage_timed(scene, stages, stats);
-
     auto stage_start = Clock::now();
-    set_up_triangles_into(scene, geometry, options.threads, stages, stats, result.workspace);
     const std::vector<TriangleSetup>& setups = result.workspace.setups;
-    const int fixed_bits = fixed_bits_for(settings.snap_bits);
-    const FixedSampleOffsets offsets =
-        fixed_sample_offsets(stages.sample_offsets(settings.samples, settings.pattern), fixed_bits);
-    const int samples = static_cast<int>(offsets.x.size());
-    const SampleBounds bounds{*std::min_element(offsets.x.begin(), offsets.x.end()),
-                              *std::max_element(offsets.x.begin(), offsets.x.end()),
-                              *std::min_element(offsets.y.begin(), offsets.y.end()),
-                              *std::max_element(offsets.y.begin(), offsets.y.end())};
-    const Bins bins = bin_setups(setups, settings.width, settings.height, fixed_bits, bounds, result.workspace.tile_bins);
-    stats.ms_setup = milliseconds_since(stage_start);
+    const TileBins bins = bin_setups(setups, frame, result.workspace.tile_bins);
+    stats.ms_setup += milliseconds_since(stage_start);  // binning is the tiled renderer's part of setup
 
     stage_start = Clock::now();
-    const Shader shader(scene, geometry, stages.lighting);
+    const int samples = frame.samples();
+    const Shader shader(scene, front.geometry, stages.lighting);
     const PixelResolver resolver(shader, resolve_params_for(scene, options), samples);
     Image& image = result.image;
-    image.width = settings.width;
-    image.height = settings.height;
-    image.channels = resolver.channels();
-    image.pixels.resize(static_cast<size_t>(image.width) * image.height * image.channels);
+    size_image(image, settings.width, settings.height, resolver.channels());
     VisibilityBuffer* visibility = nullptr;
     if (options.keep_visibility) {
         result.visibility.resize(settings.width, settings.height, samples);
@@ -344,11 +259,12 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
     } else {
         result.visibility = VisibilityBuffer{};
     }
-    const TileJob job{setups, offsets, bounds, fixed_bits, settings.width, settings.height, samples,
-                      settings.modes.hierarchical_z};
+    const TileJob job{setups, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
     std::atomic<size_t> covered{0}, hidden{0};
+    std::atomic<int64_t> raster_ns{0}, shade_ns{0};  // thread time in each half of the interleaved work
     const bool use_avx2 = options.allow_simd && __builtin_cpu_supports("avx2");
     parallel_for(bins.setups.size(), options.threads, [&](size_t tile) {
+        const auto tile_start = Clock::now();
         thread_local TileScratch scratch;
         const size_t plane = static_cast<size_t>(kTileSize) * kTileSize * samples;
         scratch.depth.resize(plane);
@@ -367,20 +283,30 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, RenderR
             const int x1 = std::min(settings.width, tile_x + kTileSize), y1 = std::min(settings.height, tile_y + kTileSize);
             for (int py = tile_y; py < y1; ++py)
                 for (int px = tile_x; px < x1; ++px) resolver.background(image.at(px, py));
+            shade_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - tile_start).count();
             return;
         }
         for (uint32_t index : bins.setups[tile]) {
             if (use_avx2) rasterize_in_tile_avx2(job, index, tile_x, tile_y, scratch);
             else rasterize_in_tile_portable(job, index, tile_x, tile_y, scratch);
         }
+        const auto shade_start = Clock::now();
         covered += resolve_tile(job, tile_x, tile_y, resolver, settings.msaa, scratch, image, visibility);
         hidden += scratch.hidden_blocks;
         if (!bins.setups[tile].empty()) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
+        const auto tile_end = Clock::now();
+        raster_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(shade_start - tile_start).count();
+        shade_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(tile_end - shade_start).count();
     });
     stats.samples = static_cast<size_t>(settings.width) * settings.height * samples;
     stats.covered_samples = covered;
     stats.hidden_blocks = hidden;
-    stats.ms_raster = milliseconds_since(stage_start);  // rasterization and shading are interleaved per tile
+    // Rasterization and shading are interleaved per tile: their wall time is split as their thread time is.
+    const double interleaved_ms = milliseconds_since(stage_start);
+    const double thread_ns = static_cast<double>(raster_ns + shade_ns);
+    const double raster_share = thread_ns > 0.0 ? static_cast<double>(raster_ns.load()) / thread_ns : 1.0;
+    stats.ms_raster = interleaved_ms * raster_share;
+    stats.ms_shade = interleaved_ms - stats.ms_raster;
     stats.ms_total = milliseconds_since(start);
 }
 

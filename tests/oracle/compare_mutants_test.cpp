@@ -37,12 +37,15 @@ const Caught kCaught[] = {
     {"front faces culled (winding inverted)", "teapot.yaml", 0.0f, true},
 };
 
-Comparison compare_corpus(const Caught& c, const PipelineStages& stages) {
+// The scene of `c` compared with the oracle, rendered by `stages` on `path` (a mutant's, or the real ones).
+Comparison compare_corpus(const Caught& c, const PipelineStages& stages, RasterPath path = RasterPath::tiled) {
     Scene scene = load_scene(kCorpus + c.scene);
     scene.settings.samples = 1;
     if (c.near > 0.0f) scene.camera.near = c.near;
     scene.settings.cull_backfaces = c.cull;
-    return compare_scene(scene, ComparisonOptions{}, stages);
+    ComparisonOptions options;
+    options.raster_path = path;
+    return compare_scene(scene, options, stages);
 }
 
 std::string reasons(const Comparison& c) {
@@ -61,7 +64,8 @@ TEST(OracleCatchesMutants, eachListedBugGivesGenuineDisagreementsWhereTheCorrect
                                   (c.cull ? ", culled" : "");
         if (!correct.count(scene)) correct[scene] = compare_corpus(c, PipelineStages{}).counts.genuine_total();
         EXPECT_EQ(correct[scene], 0u) << scene;
-        const Comparison faulty = compare_corpus(c, mutants::mutant(c.mutant).stages);
+        const mutants::Mutant& mutant = mutants::mutant(c.mutant);
+        const Comparison faulty = compare_corpus(c, mutant.stages, mutant.path);
         const uint64_t genuine = faulty.counts.genuine_total();
         EXPECT_GT(genuine, 0u) << c.mutant << " on " << scene;
         char line[512];

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/core/conventions.h"
+#include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/reference_rasterizer.h"
 #include "raster/pipeline/render.h"
 #include "raster/pipeline/setup.h"
@@ -64,7 +65,7 @@ SharedEdgeCount shared_edge_coverage(EdgeArithmetic edges) {
         return glm::vec4(static_cast<float>(2.0 * px / kSize - 1.0), static_cast<float>(1.0 - 2.0 * py / kSize), 0.5f, 1.0f);
     };
     const glm::dvec2 a(9000.3, 8000.7), b(11000.9, 9500.1), left(9500.2, 9900.4), right(10500.6, 7600.8);
-    SetupParams params{kSize, kSize, 16};
+    FrameParams params = frame_params(kSize, kSize, 16);
     params.edges = edges;
     std::vector<TriangleSetup> setups;
     for (const glm::dvec2& third : {left, right})
@@ -97,7 +98,7 @@ TEST(EdgeArithmetic, fixedEdgesCoverASharedEdgeExactlyOnceAndFloatEdgesCrackOrDo
 TEST(Interpolation, affineIsLinearInScreenSpaceAndPerspectiveIsNot) {
     // One setup with very different w at its vertices; halfway along an edge in screen space.
     auto hit_at_midpoint = [](Interpolation interpolation) {
-        SetupParams params{64, 64, 8};
+        FrameParams params = frame_params(64, 64, 8);
         params.interpolation = interpolation;
         const glm::vec4 a(-0.5f, -0.5f, 0.5f, 1.0f), b(0.5f * 10.0f, -0.5f * 10.0f, 0.5f, 10.0f), c(0.0f, 0.5f, 0.5f, 1.0f);
         ClippedPolygon polygon = clip_triangle(a, b, c, ClipVolume{0.1f, 100.0f});

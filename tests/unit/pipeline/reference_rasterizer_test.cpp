@@ -1,5 +1,6 @@
 // Coverage: the rasterizer's covered samples equal an independent exact-integer computation on the snapped
 // vertices, the top-left rule covers shared edges and vertices exactly once, and depth keeps the nearest.
+#include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/reference_rasterizer.h"
 
 #include <cstdint>
@@ -30,20 +31,17 @@ ClippedPolygon screen_polygon(std::initializer_list<glm::dvec2> points, float w 
 
 std::vector<TriangleSetup> set_up(const std::vector<ClippedPolygon>& polygons, int snap_bits = 8) {
     std::vector<TriangleSetup> setups;
-    const SetupParams params{kSize, kSize, snap_bits};
+    const FrameParams params = frame_params(kSize, kSize, snap_bits);
     for (size_t i = 0; i < polygons.size(); ++i) setup_polygon(polygons[i], static_cast<uint32_t>(i), params, setups);
     return setups;
 }
 
 VisibilityBuffer run(const std::vector<TriangleSetup>& setups, int samples, SamplePattern pattern, int snap_bits = 8,
                      int threads = 1) {
-    RasterParams params;
-    params.width = params.height = kSize;
-    params.snap_bits = snap_bits;
-    params.sample_offsets = sample_offsets(samples, pattern);
+    FrameParams params = frame_params(kSize, kSize, snap_bits, sample_offsets(samples, pattern));
     params.threads = threads;
     VisibilityBuffer visibility;
-    rasterize(setups, params, visibility);
+    rasterize_reference(setups, params, visibility);
     return visibility;
 }
 

@@ -1,9 +1,11 @@
 // End to end: every corpus scene renders, and each shows what it was built to show.
 #include "raster/pipeline/render.h"
 
-#include <cmath>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
@@ -40,6 +42,36 @@ TEST(Render, sameBytesForAnyThreadCount) {
         const RenderResult one = render_corpus(name, 1), two = render_corpus(name, 2), five = render_corpus(name, 5);
         EXPECT_EQ(one.image.pixels, two.image.pixels) << name;
         EXPECT_EQ(one.image.pixels, five.image.pixels) << name;
+    }
+}
+
+// A coverage stage that covers nothing, to tell which renderer ran.
+void rasterize_nothing(const std::vector<TriangleSetup>&, const FrameParams& frame, VisibilityBuffer& out) {
+    out.resize(frame.width, frame.height, frame.samples());
+    std::fill(out.bary.begin(), out.bary.end(), glm::vec3(0.0f));
+    std::fill(out.view_depth.begin(), out.view_depth.end(), 0.0f);
+}
+
+TEST(Render, aReplacedReferenceStageRunsOnlyOnTheReferenceRendererAndNeverSwitchesRendererSilently) {
+    const Scene scene = load_scene(kCorpus + "single_triangle.yaml");
+    PipelineStages stages;
+    stages.reference_rasterize = rasterize_nothing;
+    EXPECT_THROW(render(scene, RenderOptions{}, stages), std::invalid_argument);
+    RenderOptions reference;
+    reference.path = RasterPath::reference;
+    EXPECT_GT(render(scene, reference).stats.covered_samples, 0u);
+    EXPECT_EQ(render(scene, reference, stages).stats.covered_samples, 0u) << "the replaced stage did not run";
+}
+
+TEST(Render, bothRenderersTimeRasterizationAndShadingApart) {
+    const Scene scene = load_scene(kCorpus + "teapot.yaml");
+    for (RasterPath path : {RasterPath::tiled, RasterPath::reference}) {
+        RenderOptions options;
+        options.path = path;
+        const RenderStats stats = render(scene, options).stats;
+        EXPECT_GT(stats.ms_raster, 0.0);
+        EXPECT_GT(stats.ms_shade, 0.0) << "path " << static_cast<int>(path);
+        EXPECT_LE(stats.ms_vertex + stats.ms_setup + stats.ms_raster + stats.ms_shade, stats.ms_total * 1.0001);
     }
 }
 

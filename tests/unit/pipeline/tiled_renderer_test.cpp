@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/formats/scene_loader.h"
+#include "raster/pipeline/render.h"
 
 namespace raster {
 namespace {
@@ -58,7 +59,7 @@ TEST(TiledRender, matchesTheReferencePathByteForByte) {
             reference_options.path = RasterPath::reference;
             const RenderResult reference = render(scene, reference_options);
             RenderResult tiled;
-            render_tiled_into(scene, options, tiled);
+            render_tiled_into(scene, options, PipelineStages{}, tiled);
             ASSERT_EQ(tiled.image.pixels, reference.image.pixels) << entry.path() << " samples " << v.samples;
             ASSERT_EQ(tiled.visibility.triangle, reference.visibility.triangle) << entry.path();
             ASSERT_EQ(tiled.visibility.view_depth, reference.visibility.view_depth) << entry.path();
@@ -67,13 +68,13 @@ TEST(TiledRender, matchesTheReferencePathByteForByte) {
             RenderOptions portable = options;
             portable.allow_simd = false;
             RenderResult scalar;
-            render_tiled_into(scene, portable, scalar);
+            render_tiled_into(scene, portable, PipelineStages{}, scalar);
             ASSERT_EQ(scalar.image.pixels, reference.image.pixels) << entry.path() << " (portable)";
             ASSERT_EQ(scalar.visibility.view_depth, reference.visibility.view_depth) << entry.path() << " (portable)";
             // Without the visibility buffer the image is still the same.
             options.keep_visibility = false;
             RenderResult lean;
-            render_tiled_into(scene, options, lean);
+            render_tiled_into(scene, options, PipelineStages{}, lean);
             ASSERT_EQ(lean.image.pixels, reference.image.pixels) << entry.path() << " (no visibility buffer)";
             EXPECT_EQ(lean.visibility.size(), 0u);
             ++compared;

@@ -1,0 +1,84 @@
+// The front end: the timed vertex stage, and culling, clipping and setup in parallel chunks kept in draw order.
+#include "raster/pipeline/front_end.h"
+
+#include <algorithm>
+
+#include "raster/core/parallel.h"
+#include "raster/core/stopwatch.h"
+
+namespace raster {
+namespace {
+
+constexpr size_t kSetupChunk = 4096;
+
+}  // namespace
+
+TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages& stages, RenderStats& stats) {
+    const auto start = Clock::now();
+    TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(scene.settings.shading));
+    stats.triangles = geometry.triangles.size();
+    stats.ms_vertex = milliseconds_since(start);
+    return geometry;
+}
+
+void set_up_triangles_into(const Scene& scene, const TransformedScene& geometry, const FrameParams& frame,
+                           const PipelineStages& stages, RenderStats& stats, RenderWorkspace& workspace) {
+    // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
+    const bool cull = scene.settings.cull_backfaces;
+    const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
+    auto& chunk_setups = workspace.chunk_setups;
+    chunk_setups.resize(chunks);
+    std::vector<size_t> chunk_clipped(chunks, 0);
+    parallel_for(chunks, frame.threads, [&](size_t chunk) {
+        const size_t begin = chunk * kSetupChunk;
+        const size_t end = std::min(geometry.triangles.size(), begin + kSetupChunk);
+        auto& out = chunk_setups[chunk];
+        out.clear();
+        out.reserve(end - begin);
+        for (size_t tri = begin; tri < end; ++tri) {
+            const TriangleIndices& v = geometry.triangles[tri];
+            const glm::vec4 &a = geometry.clip[v.v[0]], &b = geometry.clip[v.v[1]], &c = geometry.clip[v.v[2]];
+            if (cull && !stages.faces_front(a, b, c)) continue;
+            const ClippedPolygon polygon = stages.clip(a, b, c, frame.clip);
+            chunk_clipped[chunk] += polygon.clipped;
+            stages.setup(polygon, static_cast<uint32_t>(tri), frame, out);
+        }
+    });
+    std::vector<TriangleSetup>& setups = workspace.setups;
+    setups.clear();
+    for (size_t chunk = 0; chunk < chunks; ++chunk) {
+        setups.insert(setups.end(), chunk_setups[chunk].begin(), chunk_setups[chunk].end());
+        stats.clipped += chunk_clipped[chunk];
+    }
+    stats.rasterized = setups.size();
+}
+
+std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry,
+                                            const FrameParams& frame, const PipelineStages& stages, RenderStats& stats) {
+    RenderWorkspace workspace;
+    set_up_triangles_into(scene, geometry, frame, stages, stats, workspace);
+    return std::move(workspace.setups);
+}
+
+FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
+                       RenderResult& result) {
+    result.stats = RenderStats{};
+    const RenderSettings& settings = scene.settings;
+    FrontEnd out{run_vertex_stage_timed(scene, stages, result.stats),
+                 frame_params_for(scene, stages.sample_offsets(settings.samples, settings.pattern), options.threads)};
+    const auto start = Clock::now();
+    set_up_triangles_into(scene, out.geometry, out.frame, stages, result.stats, result.workspace);
+    result.stats.ms_setup = milliseconds_since(start);
+    return out;
+}
+
+ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options) {
+    ResolveParams params;
+    params.msaa = scene.settings.msaa;
+    params.background = scene.settings.background;
+    params.alpha = options.alpha;
+    params.threads = options.threads;
+    return params;
+}
+
+}  // namespace raster

@@ -1,0 +1,42 @@
+// The front end both renderers run first: the vertex stage, then clipping and setup of every triangle in draw
+// order, each counted and timed into the frame's statistics.
+#pragma once
+
+#include <vector>
+
+#include "raster/pipeline/frame.h"
+#include "raster/pipeline/frame_params.h"
+#include "raster/pipeline/resolve.h"
+#include "raster/pipeline/stages.h"
+#include "raster/pipeline/vertex_stage.h"
+
+namespace raster {
+
+// The vertex stage, for the attributes the scene's shading needs; counts triangles and times ms_vertex.
+TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages& stages, RenderStats& stats);
+
+// Culls, clips and sets up the vertex stage's triangles in parallel chunks, kept in draw order, into
+// workspace.setups; counts clipped and rasterized triangles. The caller times it.
+void set_up_triangles_into(const Scene& scene, const TransformedScene& geometry, const FrameParams& frame,
+                           const PipelineStages& stages, RenderStats& stats, RenderWorkspace& workspace);
+
+// The same into a fresh vector.
+std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry,
+                                            const FrameParams& frame, const PipelineStages& stages, RenderStats& stats);
+
+// What the front end hands a renderer: the vertex stage's output and the frame; the setups are in the result's
+// workspace.
+struct FrontEnd {
+    TransformedScene geometry;
+    FrameParams frame;
+};
+
+// A frame's start, for either renderer: resets result.stats, runs the vertex stage and sets up every triangle
+// (timing ms_vertex and ms_setup) for the frame the scene and the options ask for.
+FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
+                       RenderResult& result);
+
+// The resolve parameters the scene's settings and the options ask for.
+ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options);
+
+}  // namespace raster
