@@ -1,4 +1,5 @@
-// `raster compare`: renders a scene with raster and with the Embree oracle and classes every sample.
+// `raster compare`: renders a scene as `raster render` does and with the independent oracle, classes every sample
+// and checks every pixel of the image raster writes.
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -6,7 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
-#include "oracle/compare/scene_comparison.h"
+#include "apps/settings_flags.h"
+#include "harness/comparison/scene_comparison.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "raster/core/errors.h"
@@ -20,65 +22,67 @@ namespace {
 
 struct CompareFlags {
     std::string scene;
-    std::optional<int> samples;
+    SettingsFlags settings;
     std::string json_out;
     std::string diff_out;
     bool fast_oracle = false;
-    int threads = 0;
 };
 
 void register_compare_flags(CLI::App& app, CompareFlags& flags) {
     CLI::App* compare = app.add_subcommand(
-        "compare", "Render a scene with raster and with the Embree oracle, and class every sample's disagreement.");
+        "compare", "Render a scene as `raster render` does and with the independent Embree oracle, and class every "
+                   "sample's and every pixel's disagreement.");
     compare->footer(
-        "Every sample is classed as agree, ambiguous (edge band, depth tie, clip boundary: allowed by the precision\n"
-        "model) or genuine (visibility, barycentrics, depth, colour). Exit code 0 when genuine_total is 0, 1 when not,\n"
-        "2 on bad input, 3 when an output cannot be written or Embree fails.\n"
+        "Every sample is classed as agree, ambiguous (edge band, depth tie, clip boundary, facing: allowed by the\n"
+        "precision model) or genuine (visibility, barycentrics, depth); every pixel whose samples all agree has its\n"
+        "colour, as raster's PNG and PPM writers write it, checked against the oracle's bounds (genuine: colour).\n"
+        "The settings flags are render's. Exit code 0 when genuine_total is 0, 1 when not, 2 on bad input, 3 when an\n"
+        "output cannot be written or Embree fails.\n"
         "Example: raster compare corpus/scenes/teapot.yaml --samples 16 --json teapot.json --diff teapot-diff.png");
     compare->add_option("scene", flags.scene, "Scene file")->required();
-    compare->add_option("--samples", flags.samples, "Samples per pixel (overrides the scene): 1, 2, 4, 8, 16 or N*N");
+    register_settings_flags(*compare, flags.settings);
     compare->add_option("--json", flags.json_out, "Write the counts and timings as JSON to this file");
     compare->add_option("--diff", flags.diff_out,
-                        "Write a disagreement map: genuine red, ambiguous yellow, agreeing dimmed grey");
+                        "Write a disagreement map: genuine samples red, genuine colour magenta, ambiguous yellow, "
+                        "agreeing dimmed grey");
     compare->add_flag("--fast-oracle", flags.fast_oracle,
                       "Embree without RTC_SCENE_FLAG_ROBUST (faster, less careful; verdicts need the default)");
-    compare->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (results are the same for any count)")
-        ->check(CLI::Range(0, 256));
 }
 
 int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err) {
     Scene scene;
     try {
         scene = load_scene(flags.scene);
-        if (flags.samples) scene.settings.samples = *flags.samples;
-        if (std::string problem = settings_problem(scene.settings); !problem.empty())
-            throw InputError(flags.scene, 0, 0, problem);
+        try {
+            apply_settings_flags(flags.settings, scene);
+        } catch (const InputError& error) {  // a setting the flags made invalid: name the scene it is for
+            throw InputError(flags.scene, 0, 0, error.message());
+        }
     } catch (const InputError& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitBadInput;
     }
-    oracle::ComparisonOptions options;
+    harness::ComparisonOptions options;
     options.mode = flags.fast_oracle ? oracle::OracleMode::fast : oracle::OracleMode::robust;
-    options.threads = flags.threads;
-    std::unique_ptr<oracle::Comparison> comparison;
+    options.threads = flags.settings.threads;
+    options.alpha = flags.settings.alpha;
+    std::unique_ptr<harness::Comparison> comparison;
     try {
-        comparison = std::make_unique<oracle::Comparison>(oracle::compare_scene(scene, options));
+        comparison = std::make_unique<harness::Comparison>(harness::compare_scene(scene, options));
     } catch (const oracle::OracleError& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;
     }
     try {
         if (!flags.json_out.empty())
-            write_file_atomically(flags.json_out, oracle::comparison_json(*comparison).dump(2) + "\n");
-        if (!flags.diff_out.empty())
-            write_image(flags.diff_out,
-                        oracle::diff_map(comparison->classes, comparison->samples, comparison->raster.image));
+            write_file_atomically(flags.json_out, harness::comparison_json(*comparison).dump(2) + "\n");
+        if (!flags.diff_out.empty()) write_image(flags.diff_out, harness::diff_map(*comparison));
     } catch (const std::exception& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;
     }
-    out << oracle::comparison_summary(*comparison);
-    return comparison->counts.genuine_total() == 0 ? kExitOk : kExitCheckFailed;
+    out << harness::comparison_summary(*comparison);
+    return comparison->genuine_total() == 0 ? kExitOk : kExitCheckFailed;
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
+#include "apps/settings_flags.h"
 #include "raster/core/errors.h"
 #include "raster/image/image.h"
 #include "raster/pipeline/render.h"
@@ -17,20 +18,12 @@
 namespace raster::cli {
 namespace {
 
-// Flags of `raster render`, each overriding the scene's own setting when given.
+// Flags of `raster render`; the settings flags override the scene's own settings when given.
 struct RenderFlags {
     std::string scene;
     std::string output;
-    std::optional<int> samples;
-    std::optional<std::string> pattern;
-    bool msaa = false;
-    std::optional<std::string> shading;
-    std::optional<int> snap_bits;
-    std::optional<std::string> cull;
-    std::optional<std::string> edges, interpolation, depth_format, clipping, hierarchical_z;
-    bool alpha = false;
+    SettingsFlags settings;
     std::string depth_out;
-    int threads = 0;
     bool stats = false;
 };
 
@@ -44,49 +37,11 @@ void register_render_flags(CLI::App& app, RenderFlags& flags) {
     render->add_option("-o,--output", flags.output,
                        "Output image; .ppm writes binary PPM, anything else PNG (default: SCENE's stem + .png in the "
                        "current directory)");
-    render->add_option("--samples", flags.samples, "Samples per pixel: 1, 2, 4, 8, 16 (standard) or N*N (grid)");
-    render->add_option("--pattern", flags.pattern, "Sample pattern: standard (Vulkan positions) or grid (N x N)")
-        ->check(CLI::IsMember({"standard", "grid"}));
-    render->add_flag("--msaa", flags.msaa, "Shade once per pixel per triangle (MSAA) instead of every sample (SSAA)");
-    render->add_option("--shading", flags.shading, "Shading: unlit, flat, gouraud, phong or blinn-phong")
-        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "phong", "blinn-phong"}));
-    render->add_option("--snap-bits", flags.snap_bits, "Sub-pixel bits for vertex snapping, 1..16 (default 8)");
-    render->add_option("--cull", flags.cull, "Back-face culling: none or back")->check(CLI::IsMember({"none", "back"}));
-    render->add_option("--edges", flags.edges, "Edge arithmetic: fixed (64-bit, watertight; default) or float")
-        ->check(CLI::IsMember({"fixed", "float"}));
-    render->add_option("--interpolation", flags.interpolation, "perspective (default) or affine")
-        ->check(CLI::IsMember({"perspective", "affine"}));
-    render->add_option("--depth-format", flags.depth_format,
-                       "Depth test on reversed-z float (default), float z/w, or fixed24 (24-bit z/w)")
-        ->check(CLI::IsMember({"reversed-z", "float", "fixed24"}));
-    render->add_option("--clipping", flags.clipping, "full (default) or guard-band (side planes only beyond 4x the view)")
-        ->check(CLI::IsMember({"full", "guard-band"}));
-    render->add_option("--hierarchical-z", flags.hierarchical_z,
-                       "Hierarchical-Z occlusion culling: on (default) or off; never changes a pixel")
-        ->check(CLI::IsMember({"on", "off"}));
-    render->add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
+    register_settings_flags(*render, flags.settings);
     render->add_option("--depth-out", flags.depth_out,
                        "Also write a greyscale depth image (nearest white, farthest dark grey, empty black)");
-    render->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (the image is the same for any count)")
-        ->check(CLI::Range(0, 256));
     render->add_flag("--stats", flags.stats,
                      "Print one JSON line of counts and in-process timings (loading excluded) on stdout");
-}
-
-void apply_overrides(const RenderFlags& flags, Scene& scene) {
-    RenderSettings& settings = scene.settings;
-    if (flags.samples) settings.samples = *flags.samples;
-    if (flags.pattern) parse_sample_pattern(*flags.pattern, settings.pattern);
-    if (flags.msaa) settings.msaa = true;
-    if (flags.shading) parse_shading_mode(*flags.shading, settings.shading);
-    if (flags.snap_bits) settings.snap_bits = *flags.snap_bits;
-    if (flags.cull) settings.cull_backfaces = *flags.cull == "back";
-    if (flags.edges) parse_edge_arithmetic(*flags.edges, settings.modes.edges);
-    if (flags.interpolation) parse_interpolation(*flags.interpolation, settings.modes.interpolation);
-    if (flags.depth_format) parse_depth_format(*flags.depth_format, settings.modes.depth);
-    if (flags.clipping) parse_clipping(*flags.clipping, settings.modes.clipping);
-    if (flags.hierarchical_z) settings.modes.hierarchical_z = *flags.hierarchical_z == "on";
-    if (std::string problem = settings_problem(settings); !problem.empty()) throw InputError("", 0, 0, problem);
 }
 
 nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
@@ -121,7 +76,7 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
         SceneFormat format = SceneFormat::raster;
         scene = load_scene(flags.scene, &format);
         if (format == SceneFormat::seed000) seed000 = load_seed000_config(flags.scene);
-        apply_overrides(flags, scene);
+        apply_settings_flags(flags.settings, scene);
     } catch (const InputError& error) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitBadInput;
@@ -136,8 +91,8 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     if (output.empty()) output = std::filesystem::path(flags.scene).stem().string() + ".png";
     const bool depth_task = seed000 && seed000->task == Seed000Task::shading_depth;
     RenderOptions options;
-    options.threads = flags.threads;
-    options.alpha = flags.alpha;
+    options.threads = flags.settings.threads;
+    options.alpha = flags.settings.alpha;
     options.keep_visibility = depth_task || !flags.depth_out.empty();  // the full-frame sample planes, only if read
     const RenderResult result = render(scene, options);
     try {

@@ -10,7 +10,7 @@
 
 #include "apps/command.h"
 #include "apps/progress_bar.h"
-#include "oracle/compare/scene_comparison.h"
+#include "harness/comparison/scene_comparison.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "oracle/report/report.h"
@@ -153,7 +153,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
         err << "raster report: error: cannot create " << dir << ": " << dir_error.message() << "\n";
         return kExitIoError;
     }
-    oracle::ComparisonOptions options;
+    harness::ComparisonOptions options;
     options.mode = flags.fast_oracle ? oracle::OracleMode::fast : oracle::OracleMode::robust;
     options.threads = flags.threads;
     std::vector<oracle::ReportRow> rows;
@@ -165,21 +165,22 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
             oracle::ReportRow row;
             row.name = fs::path(scene.path).stem().string();
             progress.show(i, row.name);
-            const auto comparison = std::make_unique<oracle::Comparison>(oracle::compare_scene(scene, options));
+            const auto comparison = std::make_unique<harness::Comparison>(harness::compare_scene(scene, options));
             const std::string stem = oracle::unique_file_stem(row.name, taken);
             row.raster_image = stem + ".raster.png";
             row.oracle_image = stem + ".oracle.png";
             row.diff_image = stem + ".diff.png";
             write_image(dir / row.raster_image, comparison->raster.image);
             write_image(dir / row.oracle_image, comparison->oracle_image);
-            write_image(dir / row.diff_image,
-                        oracle::diff_map(comparison->classes, comparison->samples, comparison->raster.image));
-            row.comparison = oracle::comparison_json(*comparison);
+            write_image(dir / row.diff_image, harness::diff_map(*comparison));
+            row.comparison = harness::comparison_json(*comparison);
             char line[256];
-            std::snprintf(line, sizeof line, "%s: genuine %llu, ambiguous %llu, max colour error %d, raster %.0f ms, oracle %.0f ms\n",
-                          row.name.c_str(), static_cast<unsigned long long>(comparison->counts.genuine_total()),
-                          static_cast<unsigned long long>(comparison->counts.ambiguous_total()),
-                          comparison->max_color_error, comparison->raster_ms, comparison->oracle_ms);
+            std::snprintf(line, sizeof line,
+                          "%s: genuine %llu, ambiguous %llu, colour genuine %llu, raster %.0f ms, oracle %.0f ms\n",
+                          row.name.c_str(), static_cast<unsigned long long>(comparison->genuine_total()),
+                          static_cast<unsigned long long>(comparison->visibility.counts.ambiguous_total()),
+                          static_cast<unsigned long long>(comparison->colour_genuine_pixels), comparison->raster_ms,
+                          comparison->oracle_ms);
             progress.finish();
             out << line << std::flush;
             rows.push_back(std::move(row));

@@ -7,9 +7,9 @@
 #include "apps/command.h"
 #include "apps/progress_bar.h"
 #include "oracle/reference/embree_device.h"
-#include "oracle/tradeoff/pareto_plot.h"
-#include "oracle/tradeoff/tradeoff.h"
-#include "oracle/tradeoff/tradeoff_modes.h"
+#include "harness/tradeoff/pareto_plot.h"
+#include "harness/tradeoff/tradeoff.h"
+#include "harness/tradeoff/tradeoff_modes.h"
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
 #include "raster/pipeline/render.h"
@@ -71,11 +71,11 @@ void register_tradeoff_flags(CLI::App& app, TradeoffFlags& flags) {
 // The modes the flags ask for on a scene with `baseline` settings: the named ones (each checked), or the default
 // sweep. A mode whose settings the scene cannot render (e.g. too many samples for its size) is an error when named
 // and left out with a warning otherwise.
-std::vector<const oracle::TradeoffMode*> modes_for(const TradeoffFlags& flags, const Scene& scene, std::ostream& err) {
-    std::vector<const oracle::TradeoffMode*> modes;
+std::vector<const harness::TradeoffMode*> modes_for(const TradeoffFlags& flags, const Scene& scene, std::ostream& err) {
+    std::vector<const harness::TradeoffMode*> modes;
     if (flags.modes.empty()) {
-        for (const oracle::TradeoffMode* mode : oracle::default_sweep(scene.settings)) {
-            const std::string problem = settings_problem(oracle::apply_mode(*mode, scene.settings));
+        for (const harness::TradeoffMode* mode : harness::default_sweep(scene.settings)) {
+            const std::string problem = settings_problem(harness::apply_mode(*mode, scene.settings));
             if (problem.empty())
                 modes.push_back(mode);
             else
@@ -85,20 +85,20 @@ std::vector<const oracle::TradeoffMode*> modes_for(const TradeoffFlags& flags, c
         return modes;
     }
     for (const std::string& name : flags.modes) {
-        const oracle::TradeoffMode* mode = oracle::find_tradeoff_mode(name);
+        const harness::TradeoffMode* mode = harness::find_tradeoff_mode(name);
         if (!mode)
-            throw InputError("", 0, 0, "unknown mode '" + name + "'; the modes are " + oracle::tradeoff_mode_names());
+            throw InputError("", 0, 0, "unknown mode '" + name + "'; the modes are " + harness::tradeoff_mode_names());
         bool repeated = false;
-        for (const oracle::TradeoffMode* earlier : modes) repeated = repeated || earlier == mode;
+        for (const harness::TradeoffMode* earlier : modes) repeated = repeated || earlier == mode;
         if (repeated) continue;
-        if (std::string problem = settings_problem(oracle::apply_mode(*mode, scene.settings)); !problem.empty())
+        if (std::string problem = settings_problem(harness::apply_mode(*mode, scene.settings)); !problem.empty())
             throw InputError(scene.path, 0, 0, "mode " + name + ": " + problem);
         modes.push_back(mode);
     }
     return modes;
 }
 
-void print_scene(const oracle::SceneTradeoff& scene, int reference_grid, std::ostream& out) {
+void print_scene(const harness::SceneTradeoff& scene, int reference_grid, std::ostream& out) {
     char line[512];
     std::snprintf(line, sizeof line, "%s: %dx%d, %zu triangles, %dx%d oracle reference (%.0f ms)\n", scene.name.c_str(),
                   scene.width, scene.height, scene.triangles, reference_grid, reference_grid, scene.reference_ms);
@@ -106,7 +106,7 @@ void print_scene(const oracle::SceneTradeoff& scene, int reference_grid, std::os
     std::snprintf(line, sizeof line, "  %-18s %10s %10s %10s %8s %10s  %s\n", "mode", "median ms", "genuine",
                   "ambiguous", "RMSE", "coverage", "front");
     out << line;
-    for (const oracle::ModeResult& m : scene.modes) {
+    for (const harness::ModeResult& m : scene.modes) {
         std::snprintf(line, sizeof line, "  %-18s %10.2f %10llu %10llu %8.3f %10.5f  %s\n", m.mode.c_str(), m.median_ms,
                       static_cast<unsigned long long>(m.genuine), static_cast<unsigned long long>(m.ambiguous),
                       m.color_rmse, m.coverage_error, m.on_front ? "*" : "");
@@ -116,14 +116,14 @@ void print_scene(const oracle::SceneTradeoff& scene, int reference_grid, std::os
 
 int run_tradeoff(const TradeoffFlags& flags, std::ostream& out, std::ostream& err) {
     if (flags.list_modes) {
-        for (const oracle::TradeoffMode& mode : oracle::tradeoff_modes()) {
+        for (const harness::TradeoffMode& mode : harness::tradeoff_modes()) {
             char line[256];
             std::snprintf(line, sizeof line, "%-18s %s\n", mode.name.c_str(), mode.description.c_str());
             out << line;
         }
         return kExitOk;
     }
-    oracle::TradeoffOptions options;
+    harness::TradeoffOptions options;
     options.runs = flags.runs;
     options.reference_grid = flags.reference_grid;
     options.oracle_mode = flags.fast_oracle ? oracle::OracleMode::fast : oracle::OracleMode::robust;
@@ -131,12 +131,12 @@ int run_tradeoff(const TradeoffFlags& flags, std::ostream& out, std::ostream& er
 
     // Everything is read and checked before anything is rendered or written.
     std::vector<Scene> scenes;
-    std::vector<std::vector<const oracle::TradeoffMode*>> modes;
+    std::vector<std::vector<const harness::TradeoffMode*>> modes;
     try {
         if (flags.scenes.empty()) throw InputError("", 0, 0, "no scene given (raster tradeoff SCENE... [-o DIR])");
         for (const std::string& file : flags.scenes) {
             Scene scene = load_scene(file);
-            if (std::string problem = oracle::reference_problem(scene.settings, flags.reference_grid); !problem.empty())
+            if (std::string problem = harness::reference_problem(scene.settings, flags.reference_grid); !problem.empty())
                 throw InputError(file, 0, 0, problem);
             modes.push_back(modes_for(flags, scene, err));
             scenes.push_back(std::move(scene));
@@ -157,17 +157,17 @@ int run_tradeoff(const TradeoffFlags& flags, std::ostream& out, std::ostream& er
         return kExitIoError;
     }
     size_t steps = 0;
-    for (const auto& scene_modes : modes) steps += oracle::measure_steps(scene_modes.size(), options);
+    for (const auto& scene_modes : modes) steps += harness::measure_steps(scene_modes.size(), options);
     ProgressBar progress(err, steps);
     size_t done = 0;
-    std::vector<oracle::SceneTradeoff> results;
+    std::vector<harness::SceneTradeoff> results;
     try {
         for (size_t i = 0; i < scenes.size(); ++i) {
-            results.push_back(oracle::measure_scene(scenes[i], modes[i], options,
+            results.push_back(harness::measure_scene(scenes[i], modes[i], options,
                                                     [&](const std::string& label) { progress.show(done++, label); }));
             progress.finish();
             print_scene(results.back(), flags.reference_grid, out);
-            for (const oracle::ModeResult& m : results.back().modes)
+            for (const harness::ModeResult& m : results.back().modes)
                 if (!m.timed_image_matches)
                     err << "raster tradeoff: warning: " << scenes[i].path << ": mode " << m.mode
                         << ": the timed frame's image differs from the one compared with the oracle\n";
@@ -175,9 +175,9 @@ int run_tradeoff(const TradeoffFlags& flags, std::ostream& out, std::ostream& er
         }
         progress.show(steps, "done");
         progress.finish();
-        write_file_atomically(dir / "tradeoff.json", oracle::tradeoff_json(results, options).dump(2) + "\n");
-        write_file_atomically(dir / "tradeoff.csv", oracle::tradeoff_csv(results));
-        write_file_atomically(dir / "pareto.svg", oracle::pareto_svg(results, flags.reference_grid));
+        write_file_atomically(dir / "tradeoff.json", harness::tradeoff_json(results, options).dump(2) + "\n");
+        write_file_atomically(dir / "tradeoff.csv", harness::tradeoff_csv(results));
+        write_file_atomically(dir / "pareto.svg", harness::pareto_svg(results, flags.reference_grid));
     } catch (const std::exception& error) {
         progress.finish();
         err << "raster tradeoff: error: " << error.what() << "\n";

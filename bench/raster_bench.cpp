@@ -24,6 +24,7 @@
 #include "raster/formats/scene_loader.h"
 #include "raster/pipeline/vertex_stage.h"
 #include "oracle/reference/ray_caster.h"
+#include "oracle/reference/scene_geometry.h"
 
 #ifdef RASTER_HAVE_OSMESA
 #include "bench/llvmpipe_peer.h"
@@ -136,11 +137,10 @@ std::string oracle_name(const BenchScene& s) { return "BM_Oracle/" + s.name + "/
 
 void bm_oracle(benchmark::State& state, const BenchScene* s) {
     const raster::Scene scene = with_samples(s->scene, kOracleSamples, false);
-    const raster::TransformedScene geometry =
-        raster::run_vertex_stage(scene, raster::vertex_stage_needs(scene.settings.shading));
+    const raster::oracle::OracleScene geometry = raster::oracle::oracle_scene(scene);
     raster::oracle::OracleOptions options;
     options.threads = kThreads;
-    raster::VisibilityBuffer buffer;  // reused frame to frame
+    raster::oracle::SampleBuffer buffer;  // reused frame to frame
     for (auto _ : state) {
         raster::oracle::render_oracle(scene, geometry, options, buffer);
         benchmark::DoNotOptimize(buffer.triangle.data());

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <map>
 
-#include "oracle/compare/scene_comparison.h"
+#include "harness/comparison/scene_comparison.h"
 #include "raster/formats/scene_loader.h"
 
 namespace raster::properties {
@@ -46,15 +46,12 @@ Scene scene_of(const std::string& name) {
 
 uint64_t genuine(const std::string& name, const PipelineStages& stages, RasterPath path, int threads,
                  std::string* reasons = nullptr) {
-    oracle::ComparisonOptions options;
+    harness::ComparisonOptions options;
     options.threads = threads;
     options.raster_path = path;
-    const oracle::Comparison c = oracle::compare_scene(scene_of(name), options, stages);
-    if (reasons)
-        for (oracle::SampleClass k : {oracle::SampleClass::visibility, oracle::SampleClass::barycentrics,
-                                      oracle::SampleClass::depth, oracle::SampleClass::color})
-            if (c.counts.count(k)) *reasons += std::string(reasons->empty() ? "" : ", ") + oracle::to_string(k) + " " + std::to_string(c.counts.count(k));
-    return c.counts.genuine_total();
+    const harness::Comparison c = harness::compare_scene(scene_of(name), options, stages);
+    if (reasons) *reasons = harness::genuine_reasons(c);
+    return c.genuine_total();
 }
 
 }  // namespace

@@ -1,23 +1,26 @@
-// The disagreement map: per pixel, the worst class among its samples.
+// The disagreement map: per pixel, the worst class among its samples, then its colour's.
 #include "oracle/compare/diff_map.h"
 
 #include <algorithm>
 
 namespace raster::oracle {
 
-Image diff_map(const std::vector<SampleClass>& classes, int samples, const Image& raster_image) {
+Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
+               const RasterPixels& raster_image) {
     Image map(raster_image.width, raster_image.height, 3);
     for (int y = 0; y < map.height; ++y) {
         for (int x = 0; x < map.width; ++x) {
-            const size_t first = (static_cast<size_t>(y) * map.width + x) * static_cast<size_t>(samples);
+            const size_t pixel = static_cast<size_t>(y) * map.width + x;
+            const size_t first = pixel * static_cast<size_t>(samples);
             bool genuine = false, ambiguous = false;
             for (int s = 0; s < samples; ++s) {
                 genuine |= is_genuine(classes[first + s]);
                 ambiguous |= is_ambiguous(classes[first + s]);
             }
             uint8_t* out = map.at(x, y);
-            if (genuine || ambiguous) {
-                std::copy_n(genuine ? kGenuineColor : kAmbiguousColor, 3, out);
+            if (genuine || colour_genuine[pixel] || ambiguous) {
+                std::copy_n(genuine ? kGenuineColor : colour_genuine[pixel] ? kColourDisagreementColor : kAmbiguousColor, 3,
+                            out);
                 continue;
             }
             const uint8_t* in = raster_image.at(x, y);

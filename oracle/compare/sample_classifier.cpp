@@ -1,4 +1,4 @@
-// The comparator: per-sample classification, row by row over threads, with per-row counts summed in order.
+// The sample classifier: per-sample classification, row by row over threads, with per-row counts summed in order.
 #include "oracle/compare/sample_classifier.h"
 
 #include <algorithm>
@@ -10,8 +10,6 @@
 #include <glm/common.hpp>
 
 #include "oracle/reference/precision.h"
-#include "raster/pipeline/camera_rays.h"
-#include "raster/image/image.h"
 #include "raster/core/parallel.h"
 
 namespace raster::oracle {
@@ -20,12 +18,6 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 bool is_triangle(const ReferenceGeometry& reference, uint32_t id) { return id != kNoTriangle && id < reference.size(); }
-
-// The byte colour a sample shows (what an SSAA image averages).
-std::array<uint8_t, 3> color_bytes(const Shader& shader, uint32_t triangle, const glm::vec3& bary) {
-    const glm::vec3 c = shader.shade(triangle, bary);
-    return {to_byte(c.x), to_byte(c.y), to_byte(c.z)};
-}
 
 }  // namespace
 
@@ -39,12 +31,15 @@ const char* to_string(SampleClass c) {
         case SampleClass::visibility: return "visibility";
         case SampleClass::barycentrics: return "barycentrics";
         case SampleClass::depth: return "depth";
-        case SampleClass::color: return "color";
     }
     return "?";
 }
 
-SampleEntry sample_entry(const VisibilityBuffer& buffer, size_t index) {
+SampleEntry sample_entry(const RasterSamples& buffer, size_t index) {
+    return {buffer.triangle[index], buffer.bary[index], buffer.view_depth[index]};
+}
+
+SampleEntry sample_entry(const SampleBuffer& buffer, size_t index) {
     return {buffer.triangle[index], buffer.bary[index], buffer.view_depth[index]};
 }
 
@@ -54,8 +49,7 @@ uint64_t ComparisonCounts::ambiguous_total() const {
 }
 
 uint64_t ComparisonCounts::genuine_total() const {
-    return count(SampleClass::visibility) + count(SampleClass::barycentrics) + count(SampleClass::depth) +
-           count(SampleClass::color);
+    return count(SampleClass::visibility) + count(SampleClass::barycentrics) + count(SampleClass::depth);
 }
 
 AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
@@ -131,9 +125,12 @@ SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2
         if (!is_triangle(reference, id)) return SampleClass::visibility;
         involved[count++] = id;
     }
-    // A triangle whose facing is uncertain may be missing altogether, whatever else holds at the sample.
+    // A triangle whose facing is uncertain may be missing altogether (or present) wherever it covers the sample,
+    // exactly or within its edge band; beyond that its facing changes nothing.
     for (int i = 0; i < count; ++i)
-        if (reference.polygon(involved[i]).facing_uncertain) return SampleClass::facing;
+        if (reference.polygon(involved[i]).facing_uncertain &&
+            (reference.contains(involved[i], screen) || in_edge_band(reference, involved[i], screen)))
+            return SampleClass::facing;
     for (int i = 0; i < count; ++i)
         if (on_clip_boundary(reference, involved[i], screen)) return SampleClass::clip_boundary;
     for (int i = 0; i < count; ++i)
@@ -147,45 +144,30 @@ SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2
 }
 
 VisibilityComparison compare_visibility(const CompareInputs& in) {
-    const VisibilityBuffer& raster = *in.raster;
-    const VisibilityBuffer& oracle = *in.oracle;
+    const RasterSamples& raster = in.raster;
+    const SampleBuffer& oracle = *in.oracle;
     if (raster.width != oracle.width || raster.height != oracle.height || raster.samples != oracle.samples)
         throw std::invalid_argument("compare_visibility: the two visibility buffers have different sizes");
     VisibilityComparison result;
-    result.classes.assign(raster.size(), SampleClass::agree);
-    const int height = raster.height, width = raster.width, samples = raster.samples;
+    result.classes.assign(oracle.size(), SampleClass::agree);
+    const int height = oracle.height, width = oracle.width, samples = oracle.samples;
     std::vector<ComparisonCounts> row_counts(static_cast<size_t>(height));
-    std::vector<int> row_color_error(static_cast<size_t>(height), 0);
-    const bool same_shader = in.raster_shader == in.reference_shader;
     parallel_for(static_cast<size_t>(height), in.threads, [&](size_t row) {
         const int py = static_cast<int>(row);
         ComparisonCounts& counts = row_counts[row];
-        int& color_error = row_color_error[row];
         for (int px = 0; px < width; ++px) {
             for (int s = 0; s < samples; ++s) {
-                const size_t at = raster.index(px, py, s);
-                const SampleEntry r = sample_entry(raster, at), o = sample_entry(oracle, at);
-                const glm::dvec2 screen = sample_screen_position(px, py, s, in.offsets, in.fixed_bits);
-                SampleClass verdict = classify_sample(*in.reference, screen, r, o);
-                if (verdict == SampleClass::agree && r.triangle != kNoTriangle) {
-                    const auto shown = color_bytes(*in.raster_shader, r.triangle, r.bary);
-                    if (!same_shader && shown != color_bytes(*in.reference_shader, r.triangle, r.bary))
-                        verdict = SampleClass::color;
-                    else {
-                        const auto expected = color_bytes(*in.reference_shader, o.triangle, o.bary);
-                        for (int c = 0; c < 3; ++c)
-                            color_error = std::max(color_error, std::abs(int(shown[c]) - int(expected[c])));
-                    }
-                }
+                const size_t at = oracle.index(px, py, s);
+                const glm::dvec2 screen = glm::dvec2(px, py) + in.offsets[static_cast<size_t>(s)];
+                const SampleClass verdict =
+                    classify_sample(*in.reference, screen, sample_entry(raster, at), sample_entry(oracle, at));
                 result.classes[at] = verdict;
                 ++counts.by_class[static_cast<size_t>(verdict)];
             }
         }
     });
-    for (size_t row = 0; row < row_counts.size(); ++row) {
-        for (int c = 0; c < kSampleClassCount; ++c) result.counts.by_class[c] += row_counts[row].by_class[c];
-        result.max_color_error = std::max(result.max_color_error, row_color_error[row]);
-    }
+    for (const ComparisonCounts& counts : row_counts)
+        for (int c = 0; c < kSampleClassCount; ++c) result.counts.by_class[c] += counts.by_class[c];
     return result;
 }
 

@@ -1,6 +1,6 @@
-// The comparator: classes every sample of two visibility buffers (raster's and the oracle's) as agree, ambiguous
-// (edge band, depth tie, clip boundary) or genuine (visibility, barycentrics, depth, colour), with the bounds of
-// precision.h measured on the exact geometry of reference_geometry.h.
+// The sample classifier: classes every sample of raster's visibility against the oracle's as agree, ambiguous
+// (edge band, depth tie, clip boundary, facing) or genuine (visibility, barycentrics, depth), with the bounds of
+// precision.h measured on the exact geometry of reference_geometry.h. Colour is judged per pixel (colour_check.h).
 #pragma once
 
 #include <array>
@@ -10,10 +10,10 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "oracle/compare/raster_output.h"
 #include "oracle/reference/reference_geometry.h"
-#include "raster/pipeline/sample_pattern.h"
-#include "raster/pipeline/shade.h"
-#include "raster/pipeline/visibility_buffer.h"
+#include "oracle/reference/sample_buffer.h"
+#include "raster/core/conventions.h"
 
 namespace raster::oracle {
 
@@ -27,10 +27,9 @@ enum class SampleClass : uint8_t {
     visibility,     // genuine: a different triangle (or none) outside every allowance
     barycentrics,   // genuine: same triangle, barycentrics apart by more than their bound
     depth,          // genuine: same triangle, view depths apart by more than their bound
-    color,          // genuine: same triangle and barycentrics, but raster's shading gives another colour
 };
-inline constexpr int kSampleClassCount = 9;
-const char* to_string(SampleClass c);  // "agree", "edge_band", ..., "color"
+inline constexpr int kSampleClassCount = 8;
+const char* to_string(SampleClass c);  // "agree", "edge_band", ..., "depth"
 inline bool is_ambiguous(SampleClass c) { return c >= SampleClass::edge_band && c <= SampleClass::facing; }
 inline bool is_genuine(SampleClass c) { return c >= SampleClass::visibility; }
 
@@ -40,7 +39,8 @@ struct SampleEntry {
     glm::vec3 bary{0.0f};
     float view_depth = 0.0f;
 };
-SampleEntry sample_entry(const VisibilityBuffer& buffer, size_t index);
+SampleEntry sample_entry(const RasterSamples& buffer, size_t index);
+SampleEntry sample_entry(const SampleBuffer& buffer, size_t index);
 
 // How far raster's and the oracle's barycentrics and view depth may be apart for triangle `id` at `screen`: the
 // spread of the exact values over the square of half-side `radius`, plus both renderers' float rounding, plus
@@ -69,25 +69,20 @@ struct ComparisonCounts {
 };
 
 struct CompareInputs {
-    const VisibilityBuffer* raster = nullptr;
-    const VisibilityBuffer* oracle = nullptr;
+    RasterSamples raster;
+    const SampleBuffer* oracle = nullptr;
     const ReferenceGeometry* reference = nullptr;
-    const Shader* raster_shader = nullptr;     // raster's pipeline's shading (may be the reference one)
-    const Shader* reference_shader = nullptr;  // the real shading, which colours the oracle
-    FixedSampleOffsets offsets;                // raster's sample positions
-    int fixed_bits = 0;
+    std::vector<glm::dvec2> offsets;  // the sample positions inside a pixel (sample_positions.h)
     int threads = 0;
 };
 
 struct VisibilityComparison {
     ComparisonCounts counts;
-    int max_color_error = 0;            // 0-255: largest channel difference between the two colours, agreeing samples
-    std::vector<SampleClass> classes;   // per sample, in visibility-buffer order
+    std::vector<SampleClass> classes;  // per sample, in visibility-buffer order
 };
 
-// Classes every sample (both buffers must have the same size, else std::invalid_argument). On samples that agree on visibility, colour is
-// then checked: raster's shader at raster's (triangle, barycentrics) must give the same bytes as the reference
-// shader at the same inputs (precision.h, section 7). Deterministic for any thread count.
+// Classes every sample (both buffers must have the same size, else std::invalid_argument). Deterministic for any
+// thread count.
 VisibilityComparison compare_visibility(const CompareInputs& inputs);
 
 }  // namespace raster::oracle

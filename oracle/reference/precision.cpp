@@ -14,9 +14,13 @@ double snap_displacement(int snap_bits) { return std::ldexp(1.0, -(snap_bits + 1
 
 glm::dvec4 vertex_error(const glm::dvec4& magnitudes) { return float_gamma(kVertexRoundings) * magnitudes; }
 
-glm::dvec4 clip_step_error(const glm::dvec4& error_a, const glm::dvec4& error_b, const glm::dvec4& magnitudes_a,
-                           const glm::dvec4& magnitudes_b) {
-    return glm::max(error_a, error_b) + float_gamma(kClipStepRoundings) * (magnitudes_a + magnitudes_b);
+glm::dvec4 clip_step_error(const ClipEnd& a, const ClipEnd& b) {
+    const double gap = std::fabs(a.distance - b.distance);
+    const double slack = gap - a.distance_error - b.distance_error;
+    if (!(slack > 0.0)) return glm::dvec4(std::numeric_limits<double>::infinity());
+    const double dt = (std::fabs(a.distance) * b.distance_error + a.distance_error * std::fabs(b.distance)) / (gap * slack);
+    return glm::max(a.error, b.error) + dt * glm::abs(b.clip - a.clip) +
+           float_gamma(kClipStepRoundings) * (a.magnitudes + b.magnitudes);
 }
 
 glm::dvec2 screen_error(const glm::dvec4& clip, const glm::dvec4& error, int width, int height) {

@@ -36,12 +36,14 @@ double snap_displacement(int snap_bits);
 
 // --- 2. Float error of a vertex ------------------------------------------------------------------------------
 // A vertex p of a mesh with model matrix M, seen through view V and projection P, in clip space:
-//  - raster computes float(float(float(P V) M) p): three chained 4-term products, so its clip position is within
-//    gamma_12 (|P| |V| |M| |p|) of exact, componentwise;
+//  - raster computes float(float(float(P V) M) p) with its own float P and V: three chained 4-term products, so
+//    its clip position is within gamma_12 (|P| |V| |M| |p|) of what its matrices give, componentwise; how far its
+//    float matrices are from the oracle's exact camera is camera_precision.h's bound, added to this one;
 inline constexpr int kRasterTransformRoundings = 12;
-//  - the oracle computes float(float(V M) p) in view space (gamma_8 of |V||M||p|; P only rescales x and y, so
-//    gamma_8 |P||V||M||p| bounds it in clip units as well);
-inline constexpr int kOracleTransformRoundings = 8;
+//  - the oracle computes V (M p) in double from the scene's float M and p and rounds each view-space coordinate to
+//    float once for Embree: within u of it, plus double's own error (a few 1e-16, relative): gamma_2 of |V||M||p|
+//    (P only rescales x and y, so gamma_2 |P||V||M||p| bounds it in clip units as well);
+inline constexpr int kOracleTransformRoundings = 2;
 //  - Embree's watertight (Pluecker) test, per edge: vertex sum and difference (2), a cross product (2), a dot
 //    product with the direction (3); then the u, v, t divisions (1); the ray direction itself rounded to
 //    float (1). Its answer is exact arithmetic on vertices moved by gamma_9 of their magnitudes (backward error).
@@ -50,19 +52,31 @@ inline constexpr int kEmbreeTestRoundings = 9;
 inline constexpr int kVertexRoundings = kRasterTransformRoundings + kOracleTransformRoundings + kEmbreeTestRoundings;
 
 // The error bound (clip units, per component) of an original vertex whose magnitudes are
-// |P| |V| |M| |(p, 1)|: gamma_29 times them.
+// |P| |V| |M| |(p, 1)|: gamma_23 times them (the float camera's error comes on top, camera_precision.h).
 glm::dvec4 vertex_error(const glm::dvec4& magnitudes);
 
 // --- 3. Clipping ---------------------------------------------------------------------------------------------
 // raster's clipper makes each new vertex as a + t (b - a) with t = d_a / (d_a - d_b). In float that is the two
 // plane distances (2 roundings), their difference (1), the division (1), b - a (1), the product (1), the sum (1),
-// and the pin of w to near (1): gamma_8 relative to |a| + |b|. (raster/clip.cpp now computes it in double and
-// rounds once to float before the pin: 2 roundings, well inside the float bound kept here.) The new vertex is a
-// convex combination of the endpoints, so it inherits at most the larger of their errors:
-//     error(new) <= max(error(a), error(b)) + gamma_8 (|a| + |b|)
+// and the pin of w to near (1): gamma_8 relative to |a| + |b|. (raster/pipeline/clip.cpp computes it in double and
+// rounds once to float before the pin: 2 roundings, well inside the float bound kept here.)
+// The cut point also moves with its endpoints. With a' = a + da, b' = b + db and distances moved by
+// dd_a = n.da, dd_b = n.db (n the plane's coefficients, |dd| <= eps = |n|.e for an endpoint error e):
+//     cut' - cut = (1 - t') da + t' db + (t' - t)(b - a),    t' - t = (d_a dd_b - dd_a d_b) / ((d_a' - d_b')(d_a - d_b))
+// so, d_a and d_b having opposite signs (|d_a - d_b| = |d_a| + |d_b|),
+//     error(cut) <= max(e_a, e_b) + |dt| |b - a| + gamma_8 (|a| + |b|),
+//     |dt| <= (|d_a| eps_b + eps_a |d_b|) / (|d_a - d_b| (|d_a - d_b| - eps_a - eps_b))
+// (unbounded when eps_a + eps_b reaches |d_a - d_b|). |dt| |b - a| is about eps / sin(theta) for an edge crossing the
+// plane at angle theta: a shallow crossing slides the cut point far along the plane, which inheriting the
+// endpoints' errors alone misses.
 inline constexpr int kClipStepRoundings = 8;
-glm::dvec4 clip_step_error(const glm::dvec4& error_a, const glm::dvec4& error_b, const glm::dvec4& magnitudes_a,
-                           const glm::dvec4& magnitudes_b);
+// One end of an edge being clipped: its exact clip position, error bound and magnitudes, and its exact signed
+// distance to the plane with that distance's error bound (eps = |n|.e).
+struct ClipEnd {
+    glm::dvec4 clip{0.0}, error{0.0}, magnitudes{0.0};
+    double distance = 0.0, distance_error = 0.0;
+};
+glm::dvec4 clip_step_error(const ClipEnd& a, const ClipEnd& b);
 
 // --- 4. From clip space to the screen ------------------------------------------------------------------------
 // A clip-space error e = (ex, ey, ez, ew) at a vertex whose exact clip position is c moves its screen position

@@ -1,4 +1,4 @@
-// The Embree oracle: one triangle geometry in view space, one ray per sample, rows split over threads.
+// The Embree oracle's visibility: one triangle geometry in view space, one ray per sample, rows split over threads.
 #include "oracle/reference/ray_caster.h"
 
 #include <algorithm>
@@ -10,9 +10,8 @@
 #include <glm/geometric.hpp>
 
 #include "oracle/reference/embree_device.h"
-#include "raster/pipeline/camera_rays.h"
+#include "oracle/reference/sample_positions.h"
 #include "raster/core/parallel.h"
-#include "raster/pipeline/sample_pattern.h"
 #include "raster/core/stopwatch.h"
 
 namespace raster::oracle {
@@ -21,26 +20,12 @@ namespace {
 
 constexpr size_t kPacketSize = 8;  // RTCRayHit8
 
-// Every scene vertex in view space, indexed like geometry.clip (global vertex indices).
-std::vector<glm::vec3> view_space_vertices(const Scene& scene, const TransformedScene& geometry) {
-    std::vector<glm::vec3> vertices(geometry.clip.size());
-    for (size_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
-        const glm::mat4 model_view = geometry.view * scene.meshes[mesh].model;
-        const uint32_t first = geometry.mesh_first_vertex[mesh];
-        const auto& positions = scene.meshes[mesh].data.positions;
-        for (size_t i = 0; i < positions.size(); ++i)
-            vertices[first + i] = glm::vec3(model_view * glm::vec4(positions[i], 1.0f));
-    }
-    return vertices;
-}
-
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Front-facing seen from the eye at the view-space origin: counter-clockwise in NDC is a normal pointing back at
 // the eye, i.e. dot(normal, vertex) < 0 (perspective keeps the orientation of what lies in front of the eye).
-bool faces_eye(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-    const glm::dvec3 da(a), db(b), dc(c);
-    return glm::dot(glm::cross(db - da, dc - da), da) < 0.0;
+bool faces_eye(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    return glm::dot(glm::cross(b - a, c - a), a) < 0.0;
 }
 
 // Owns an RTCScene.
@@ -55,21 +40,23 @@ struct SceneHandle {
 
 const char* to_string(OracleMode mode) { return mode == OracleMode::robust ? "robust" : "fast"; }
 
-OracleStats render_oracle(const Scene& scene, const TransformedScene& geometry, const OracleOptions& options,
-                          VisibilityBuffer& out) {
+OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const OracleOptions& options,
+                          SampleBuffer& out) {
     OracleStats stats;
     const RenderSettings& settings = scene.settings;
     const int threads = options.threads > 0 ? options.threads : default_thread_count();
 
     auto start = Clock::now();
     EmbreeDevice device("threads=" + std::to_string(threads));
-    const std::vector<glm::vec3> vertices = view_space_vertices(scene, geometry);
+    std::vector<glm::vec3> vertices(geometry.view.size());
+    for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = glm::vec3(geometry.view[i]);
     std::vector<uint32_t> scene_triangle;  // Embree primitive id -> scene triangle id
     scene_triangle.reserve(geometry.triangles.size());
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
-        const auto& v = geometry.triangles[id].v;
+        const auto& v = geometry.triangles[id].vertex;
         if (!finite(vertices[v[0]]) || !finite(vertices[v[1]]) || !finite(vertices[v[2]])) continue;
-        if (settings.cull_backfaces && !faces_eye(vertices[v[0]], vertices[v[1]], vertices[v[2]])) continue;
+        if (settings.cull_backfaces && !faces_eye(geometry.view[v[0]], geometry.view[v[1]], geometry.view[v[2]]))
+            continue;
         scene_triangle.push_back(id);
     }
     stats.triangles = scene_triangle.size();
@@ -89,7 +76,7 @@ OracleStats render_oracle(const Scene& scene, const TransformedScene& geometry, 
         for (size_t i = 0; i < vertices.size(); ++i)
             for (int k = 0; k < 3; ++k) vertex_buffer[3 * i + k] = vertices[i][k];
         for (size_t i = 0; i < scene_triangle.size(); ++i)
-            for (int k = 0; k < 3; ++k) index_buffer[3 * i + k] = geometry.triangles[scene_triangle[i]].v[k];
+            for (int k = 0; k < 3; ++k) index_buffer[3 * i + k] = geometry.triangles[scene_triangle[i]].vertex[k];
         rtcCommitGeometry(mesh);
         rtcAttachGeometry(handle.scene, mesh);
         rtcReleaseGeometry(mesh);
@@ -100,9 +87,7 @@ OracleStats render_oracle(const Scene& scene, const TransformedScene& geometry, 
     stats.ms_build = milliseconds_since(start);
 
     start = Clock::now();
-    const std::vector<glm::vec2> offsets = sample_offsets(settings.samples, settings.pattern);
-    const int fixed_bits = fixed_bits_for(settings.snap_bits);
-    const FixedSampleOffsets fixed = fixed_sample_offsets(offsets, fixed_bits);
+    const std::vector<glm::dvec2> offsets = sample_offsets_on_grid(settings.samples, settings.pattern, settings.snap_bits);
     const int samples = static_cast<int>(offsets.size());
     out.resize(settings.width, settings.height, samples);
     const float near = scene.camera.near, far = scene.camera.far;
@@ -123,9 +108,7 @@ OracleStats render_oracle(const Scene& scene, const TransformedScene& geometry, 
                 const size_t i = begin + std::min(k, count - 1);  // inactive lanes repeat a real ray
                 const int px = static_cast<int>(i / static_cast<size_t>(samples));
                 const int s = static_cast<int>(i % static_cast<size_t>(samples));
-                const glm::dvec2 screen = sample_screen_position(px, py, s, fixed, fixed_bits);
-                const glm::dvec3 direction =
-                    view_ray_direction(geometry.projection, ndc_from_screen(screen, settings.width, settings.height));
+                const glm::dvec3 direction = ray_direction(geometry.camera, glm::dvec2(px, py) + offsets[s]);
                 packet.ray.org_x[k] = packet.ray.org_y[k] = packet.ray.org_z[k] = 0.0f;
                 packet.ray.dir_x[k] = static_cast<float>(direction.x);
                 packet.ray.dir_y[k] = static_cast<float>(direction.y);

@@ -1,12 +1,13 @@
-// The Embree oracle: ray casts a scene at exactly raster's sample positions, with the same camera, near/far planes
-// and triangle ids, into the same VisibilityBuffer type, so a comparator can read the two side by side.
+// The Embree oracle's visibility: one ray per sample through the documented sample positions (sample_positions.h)
+// from the oracle's own camera (camera.h), against the scene's triangles in view space, unsnapped. Embree answers
+// which triangle a ray hits and where; everything else is the oracle's.
 #pragma once
 
 #include <cstddef>
 
+#include "oracle/reference/sample_buffer.h"
+#include "oracle/reference/scene_geometry.h"
 #include "raster/scene/scene.h"
-#include "raster/pipeline/vertex_stage.h"
-#include "raster/pipeline/visibility_buffer.h"
 
 namespace raster::oracle {
 
@@ -26,17 +27,15 @@ struct OracleStats {
     double ms_trace = 0;   // one ray per sample
 };
 
-// Renders `scene` into `out` (resized to width x height x samples):
-// - rays start at the eye and run through each sample's screen position (raster's fixed-point sample positions,
-//   raster::sample_screen_position), in view space with direction z = -1, so t is the view depth and the
-//   t-range [near, far] clips exactly as the projection's planes do;
-// - triangles are the scene's, in view space (geometry.view * model), UNSNAPPED: the snap is the comparator's
-//   business; the triangle id is the scene's global id (raster's);
+// Renders the visibility of `scene` into `out` (resized to width x height x samples):
+// - rays start at the eye and run through each sample's screen position, in view space with direction z = -1, so
+//   t is the view depth and the t-range [near, far] clips exactly as the near and far planes do;
+// - triangles are geometry's view-space vertices rounded to float, with their scene ids;
 // - barycentrics are Embree's (1 - u - v, u, v) w.r.t. the original vertices, view depth is the hit's t.
-// With back-face culling the triangles facing away from the eye are left out (front = counter-clockwise in NDC).
-// `geometry` is the real vertex stage's output for this scene (its view and projection matrices are used).
-// Throws OracleError when Embree fails. The result does not depend on the thread count.
-OracleStats render_oracle(const Scene& scene, const TransformedScene& geometry, const OracleOptions& options,
-                          VisibilityBuffer& out);
+// With back-face culling the triangles facing away from the eye are left out (front = counter-clockwise in NDC,
+// decided exactly from the view-space vertices). Throws OracleError when Embree fails. The result does not depend
+// on the thread count.
+OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const OracleOptions& options,
+                          SampleBuffer& out);
 
 }  // namespace raster::oracle

@@ -9,8 +9,8 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "oracle/reference/camera_precision.h"
 #include "oracle/reference/precision.h"
-#include "raster/pipeline/camera_rays.h"
 
 namespace raster::oracle {
 namespace {
@@ -28,7 +28,7 @@ struct ClipVertex {
 
 enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };
 
-// The same planes as raster's clipper (raster/clip.cpp), >= 0 inside.
+// The clip planes of the README's conventions (w >= near, w <= far, |x|, |y| <= w), >= 0 inside.
 double plane_distance(int plane, const glm::dvec4& p, double near, double far) {
     switch (plane) {
         case kNear: return p.w - near;
@@ -37,6 +37,17 @@ double plane_distance(int plane, const glm::dvec4& p, double near, double far) {
         case kRight: return p.w - p.x;
         case kBottom: return p.y + p.w;
         default: return p.w - p.y;
+    }
+}
+
+// How far a vertex's distance to the plane can move with its error bound e: |n|.e.
+double plane_distance_error(int plane, const glm::dvec4& e) {
+    switch (plane) {
+        case kNear:
+        case kFar: return e.w;
+        case kLeft:
+        case kRight: return e.x + e.w;
+        default: return e.y + e.w;
     }
 }
 
@@ -65,7 +76,9 @@ std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double nea
             ClipVertex cut;
             cut.clip = in.clip + t * (outside.clip - in.clip);
             cut.magnitudes = glm::max(in.magnitudes, outside.magnitudes);
-            cut.error = clip_step_error(in.error, outside.error, in.magnitudes, outside.magnitudes);
+            cut.error = clip_step_error(
+                {in.clip, in.error, in.magnitudes, d_in, plane_distance_error(plane, in.error)},
+                {outside.clip, outside.error, outside.magnitudes, d_out, plane_distance_error(plane, outside.error)});
             // Leaving the half-space, the next edge runs along the plane; entering it, along the original edge.
             cut.outgoing = current_in ? plane_edge_kind(plane) : current.outgoing;
             out.push_back(cut);
@@ -114,8 +127,6 @@ glm::dmat4 absolute(const glm::dmat4& m) {
     return a;
 }
 
-double cross2(const glm::dvec2& a, const glm::dvec2& b) { return a.x * b.y - a.y * b.x; }
-
 }  // namespace
 
 double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
@@ -132,14 +143,14 @@ double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, co
     return best;
 }
 
-ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene& geometry)
-    : projection_(geometry.projection),
-      projection_exact_(geometry.projection),
+ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geometry)
+    : camera_(geometry.camera),
       width_(scene.settings.width),
       height_(scene.settings.height),
       near_(scene.camera.near),
       far_(scene.camera.far) {
-    const glm::dmat4 view(geometry.view);
+    const glm::dmat4& projection = camera_.projection;
+    const glm::dmat4 view_magnitude = absolute(camera_.view);
     const size_t triangle_count = geometry.triangles.size();
     triangles_.resize(triangle_count);
     polygons_.resize(triangle_count);
@@ -147,65 +158,61 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const TransformedScene&
     edge_kinds_.reserve(triangle_count * 3);
     const double snap = snap_displacement(scene.settings.snap_bits);
 
-    for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
-        const glm::dmat4 model(scene.meshes[mesh].model);
-        const glm::dmat4 model_view = view * model;
-        const glm::dmat4 view_magnitude_chain = absolute(view) * absolute(model);
-        const glm::dmat4 magnitude_chain = absolute(projection_exact_) * view_magnitude_chain;
-        const auto& positions = scene.meshes[mesh].data.positions;
-        const uint32_t first_triangle = geometry.mesh_first_triangle[mesh];
-        const uint32_t first_vertex = geometry.mesh_first_vertex[mesh];
-        const size_t mesh_triangles = scene.meshes[mesh].data.triangles.size();
-        for (uint32_t local = 0; local < mesh_triangles; ++local) {
-            const uint32_t id = first_triangle + local;
-            std::vector<ClipVertex> polygon(3);
-            glm::dvec3 view_vertex[3], oracle_error[3];
-            for (int k = 0; k < 3; ++k) {
-                const glm::dvec4 p(glm::dvec3(positions[geometry.triangles[id].v[k] - first_vertex]), 1.0);
-                const glm::dvec4 in_view = model_view * p;
-                view_vertex[k] = glm::dvec3(in_view);
-                oracle_error[k] = float_gamma(kOracleTransformRoundings) * glm::dvec3(view_magnitude_chain * glm::abs(p));
-                polygon[k].clip = projection_exact_ * in_view;
-                polygon[k].magnitudes = magnitude_chain * glm::abs(p);
-                polygon[k].error = vertex_error(polygon[k].magnitudes);
-                polygon[k].outgoing = EdgeKind::triangle;
-            }
-            triangles_[id] = {view_vertex[0],
-                              view_vertex[1] - view_vertex[0],
-                              view_vertex[2] - view_vertex[0],
-                              {oracle_error[0], oracle_error[1], oracle_error[2]}};
-            ReferencePolygon& out = polygons_[id];
-            const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
-            out.culled = scene.settings.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
-            if (scene.settings.cull_backfaces) {
-                const glm::dvec4 clip[3] = {polygon[0].clip, polygon[1].clip, polygon[2].clip};
-                const glm::dvec4 error[3] = {polygon[0].error, polygon[1].error, polygon[2].error};
-                out.facing_uncertain = facing_is_uncertain(clip, error);
-            }
-            out.first = static_cast<uint32_t>(screen_.size());
-            const std::vector<ClipVertex> original = polygon;
-            const bool unbounded = passes_by_the_eye(original, near_);
-            const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_);
-            out.count = static_cast<uint32_t>(clipped.size());
-            out.radius = snap;
-            for (const ClipVertex& v : clipped) {
-                screen_.push_back(screen_from_ndc(v.clip.x / v.clip.w, v.clip.y / v.clip.w, width_, height_));
-                edge_kinds_.push_back(v.outgoing);
-            }
-            // The bounds come from the clipped vertices; a triangle with nothing inside the view volume still gets
-            // them from its original vertices that float error may put in front of the near plane, for samples
-            // where a float clip kept a sliver. A vertex within its w error of the eye has no bounded screen
-            // position at all (screen_error is infinite), and then neither has anything about the triangle.
-            for (const ClipVertex& v : clipped.empty() ? original : clipped) {
-                if (clipped.empty() && !(v.clip.w + v.error.w >= near_)) continue;
-                const glm::dvec2 error = screen_error(v.clip, v.error, width_, height_);
-                out.radius = std::max(out.radius, snap + std::max(error.x, error.y));
-                out.depth_error = std::max(out.depth_error, v.error.w);
-                out.relative_depth_error = std::max(out.relative_depth_error, relative_depth_error(v.clip.w, v.error.w));
-                out.reversed_z_error = std::max(out.reversed_z_error, reversed_z_error(v.clip, v.error));
-            }
-            if (unbounded) out.radius = kInfinity;
+    for (uint32_t id = 0; id < triangle_count; ++id) {
+        const OracleTriangle& triangle = geometry.triangles[id];
+        const glm::dmat4 model(scene.meshes[triangle.mesh].model);
+        const glm::dmat4 view_magnitude_chain = view_magnitude * absolute(model);
+        const glm::dmat4 magnitude_chain = absolute(projection) * view_magnitude_chain;
+        const auto& positions = scene.meshes[triangle.mesh].data.positions;
+        const uint32_t first_vertex = geometry.mesh_first_vertex[triangle.mesh];
+        std::vector<ClipVertex> polygon(3);
+        glm::dvec3 view_vertex[3], oracle_error[3];
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t vertex = triangle.vertex[k];
+            const glm::dvec4 p{glm::dvec3(positions[vertex - first_vertex]), 1.0};
+            view_vertex[k] = geometry.view[vertex];
+            oracle_error[k] = float_gamma(kOracleTransformRoundings) * glm::dvec3(view_magnitude_chain * glm::abs(p));
+            polygon[k].clip = projection * glm::dvec4(view_vertex[k], 1.0);
+            polygon[k].magnitudes = magnitude_chain * glm::abs(p);
+            polygon[k].error = vertex_error(polygon[k].magnitudes) +
+                               camera_clip_error(geometry.camera_error, camera_, geometry.world[vertex]);
+            polygon[k].outgoing = EdgeKind::triangle;
         }
+        triangles_[id] = {view_vertex[0],
+                          view_vertex[1] - view_vertex[0],
+                          view_vertex[2] - view_vertex[0],
+                          {oracle_error[0], oracle_error[1], oracle_error[2]}};
+        ReferencePolygon& out = polygons_[id];
+        const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
+        out.culled = scene.settings.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
+        if (scene.settings.cull_backfaces) {
+            const glm::dvec4 clip[3] = {polygon[0].clip, polygon[1].clip, polygon[2].clip};
+            const glm::dvec4 error[3] = {polygon[0].error, polygon[1].error, polygon[2].error};
+            out.facing_uncertain = facing_is_uncertain(clip, error);
+        }
+        out.first = static_cast<uint32_t>(screen_.size());
+        const std::vector<ClipVertex> original = polygon;
+        const bool unbounded = passes_by_the_eye(original, near_);
+        const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_);
+        out.count = static_cast<uint32_t>(clipped.size());
+        out.radius = snap;
+        for (const ClipVertex& v : clipped) {
+            screen_.push_back(screen_of_ndc(camera_, {v.clip.x / v.clip.w, v.clip.y / v.clip.w}));
+            edge_kinds_.push_back(v.outgoing);
+        }
+        // The bounds come from the clipped vertices; a triangle with nothing inside the view volume still gets
+        // them from its original vertices that float error may put in front of the near plane, for samples
+        // where a float clip kept a sliver. A vertex within its w error of the eye has no bounded screen
+        // position at all (screen_error is infinite), and then neither has anything about the triangle.
+        for (const ClipVertex& v : clipped.empty() ? original : clipped) {
+            if (clipped.empty() && !(v.clip.w + v.error.w >= near_)) continue;
+            const glm::dvec2 error = screen_error(v.clip, v.error, width_, height_);
+            out.radius = std::max(out.radius, snap + std::max(error.x, error.y));
+            out.depth_error = std::max(out.depth_error, v.error.w);
+            out.relative_depth_error = std::max(out.relative_depth_error, relative_depth_error(v.clip.w, v.error.w));
+            out.reversed_z_error = std::max(out.reversed_z_error, reversed_z_error(v.clip, v.error));
+        }
+        if (unbounded) out.radius = kInfinity;
     }
 }
 
@@ -217,7 +224,7 @@ std::span<const glm::dvec2> ReferenceGeometry::screen_vertices(uint32_t id) cons
 ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
     // Moeller-Trumbore from the eye (the view-space origin); the direction has z = -1, so t is the view depth.
     const ViewTriangle& tri = triangles_[id];
-    const glm::dvec3 direction = view_ray_direction(projection_, ndc_from_screen(screen, width_, height_));
+    const glm::dvec3 direction = ray_direction(camera_, screen);
     const glm::dvec3 p = glm::cross(direction, tri.edge2);
     const double determinant = glm::dot(tri.edge1, p);
     ExactHit hit;
@@ -230,7 +237,7 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
     if (!(t > 0.0)) return hit;
     hit.valid = true;
     hit.view_depth = t;
-    hit.reversed_z = (projection_exact_[2][2] * -t + projection_exact_[3][2]) / t;  // clip z / clip w at view z = -t
+    hit.reversed_z = reversed_z(camera_, t);
     hit.bary = {1.0 - u - v, u, v};
     return hit;
 }
@@ -238,7 +245,7 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
 ReferenceGeometry::EmbreeRay ReferenceGeometry::embree_ray(uint32_t id, const glm::dvec2& screen) const {
     const ViewTriangle& tri = triangles_[id];
     return {{tri.a, tri.a + tri.edge1, tri.a + tri.edge2},
-            view_ray_direction(projection_, ndc_from_screen(screen, width_, height_)),
+            ray_direction(camera_, screen),
             tri.oracle_error};
 }
 
@@ -264,7 +271,7 @@ double ReferenceGeometry::embree_reversed_z_error(uint32_t id, const glm::dvec2&
     const double error = embree_view_depth_error(id, screen, exact);
     if (!(error < exact.view_depth)) return std::numeric_limits<double>::infinity();  // also: no valid hit
     // |P32 / t' - P32 / t| for |t' - t| <= error.
-    return std::fabs(projection_exact_[3][2]) * error / (exact.view_depth * (exact.view_depth - error));
+    return std::fabs(camera_.projection[3][2]) * error / (exact.view_depth * (exact.view_depth - error));
 }
 
 bool ReferenceGeometry::embree_may_cover(uint32_t id, const glm::dvec2& screen) const {
@@ -307,16 +314,10 @@ double ReferenceGeometry::boundary_distance(uint32_t id, const glm::dvec2& scree
 }
 
 bool ReferenceGeometry::contains(uint32_t id, const glm::dvec2& screen) const {
-    const std::span<const glm::dvec2> v = screen_vertices(id);
-    if (v.size() < 3) return false;
-    // Convex polygon of either winding: inside when no edge has the point strictly on its outer side.
-    bool any_positive = false, any_negative = false;
-    for (size_t i = 0; i < v.size(); ++i) {
-        const double side = cross2(v[(i + 1) % v.size()] - v[i], screen - v[i]);
-        any_positive |= side > 0.0;
-        any_negative |= side < 0.0;
-    }
-    return !(any_positive && any_negative);
+    if (polygons_[id].count == 0) return false;
+    const ExactHit exact = hit(id, screen);
+    return exact.valid && exact.bary.x >= 0.0 && exact.bary.y >= 0.0 && exact.bary.z >= 0.0 && near_ <= exact.view_depth &&
+           exact.view_depth <= far_;
 }
 
 }  // namespace raster::oracle

@@ -10,8 +10,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "oracle/reference/scene_geometry.h"
 #include "raster/scene/scene.h"
-#include "raster/pipeline/vertex_stage.h"
 
 namespace raster::oracle {
 
@@ -51,8 +51,8 @@ struct SquareRange {
 
 class ReferenceGeometry {
 public:
-    // `geometry` is the real vertex stage's output for `scene` (its view and projection matrices are used).
-    ReferenceGeometry(const Scene& scene, const TransformedScene& geometry);
+    // `geometry` is the oracle's view of `scene` (oracle_scene).
+    ReferenceGeometry(const Scene& scene, const OracleScene& geometry);
 
     size_t size() const { return polygons_.size(); }
     const ReferencePolygon& polygon(uint32_t id) const { return polygons_[id]; }
@@ -77,7 +77,10 @@ public:
     // Max-norm distance from `screen` to the polygon's boundary (every edge, whatever made it); infinite when the
     // polygon is empty.
     double boundary_distance(uint32_t id, const glm::dvec2& screen) const;
-    // True when `screen` is inside the (non-empty) polygon or on its boundary.
+    // True when the ray through `screen` meets the exact triangle inside the view volume: a valid hit with every
+    // barycentric >= 0 and near <= t <= far (samples are always inside the side planes). Decided from the hit,
+    // not from the clipped polygon, whose near-duplicate vertices (an edge clipped through a viewport corner) give
+    // edges whose direction is rounding noise.
     bool contains(uint32_t id, const glm::dvec2& screen) const;
 
 private:
@@ -95,8 +98,7 @@ private:
     // embree_view_depth_error with the exact hit at `screen` already found.
     double embree_view_depth_error(uint32_t id, const glm::dvec2& screen, const ExactHit& exact) const;
 
-    glm::mat4 projection_;          // as the vertex stage made it (camera rays are solved from it)
-    glm::dmat4 projection_exact_;   // the same values in double
+    OracleCamera camera_;
     int width_ = 0, height_ = 0;
     double near_ = 0, far_ = 0;
     std::vector<ViewTriangle> triangles_;

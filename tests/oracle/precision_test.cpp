@@ -25,8 +25,8 @@ TEST(Precision, gammaIsHighamsBoundOnChainedRoundings) {
     const double u = std::ldexp(1.0, -24);
     EXPECT_EQ(kFloatUnitRoundoff, u);
     EXPECT_DOUBLE_EQ(float_gamma(1), u / (1 - u));
-    EXPECT_DOUBLE_EQ(float_gamma(29), 29 * u / (1 - 29 * u));
-    EXPECT_EQ(kVertexRoundings, 29);
+    EXPECT_DOUBLE_EQ(float_gamma(23), 23 * u / (1 - 23 * u));
+    EXPECT_EQ(kVertexRoundings, 23);
     // A real 4-term float dot product stays inside gamma_4 |a|.|b|.
     const float a[4] = {1.1f, -2.3f, 3.7f, 1.0f}, b[4] = {0.3f, 0.77f, -1.9f, 5.5f};
     float product = 0.0f;
@@ -40,13 +40,38 @@ TEST(Precision, gammaIsHighamsBoundOnChainedRoundings) {
 }
 
 TEST(Precision, aClippedVertexInheritsTheLargerEndpointErrorPlusItsOwnRounding) {
-    const glm::dvec4 error_a(1e-6, 2e-6, 0, 3e-6), error_b(2e-6, 1e-6, 0, 1e-6);
-    const glm::dvec4 magnitudes_a(1, 2, 3, 4), magnitudes_b(4, 3, 2, 1);
-    const glm::dvec4 e = clip_step_error(error_a, error_b, magnitudes_a, magnitudes_b);
+    // With exact plane distances (no slide), the cut inherits the larger endpoint error plus its rounding.
+    const ClipEnd a{glm::dvec4(0.0), glm::dvec4(1e-6, 2e-6, 0, 3e-6), glm::dvec4(1, 2, 3, 4), 1.0, 0.0};
+    const ClipEnd b{glm::dvec4(0.0), glm::dvec4(2e-6, 1e-6, 0, 1e-6), glm::dvec4(4, 3, 2, 1), -1.0, 0.0};
+    const glm::dvec4 e = clip_step_error(a, b);
     const double g = float_gamma(kClipStepRoundings);
     EXPECT_DOUBLE_EQ(e.x, 2e-6 + 5 * g);
     EXPECT_DOUBLE_EQ(e.y, 2e-6 + 5 * g);
     EXPECT_DOUBLE_EQ(e.w, 3e-6 + 5 * g);
+}
+
+TEST(Precision, aShallowCrossingSlidesTheCutPointAlongThePlaneByTheDistanceErrorOverTheAngle) {
+    // An edge crossing the near plane w = 1 at a shallow angle: w falls by 2e-3 over 100 units of x.
+    const double near = 1.0;
+    const glm::dvec4 a(0, 0, 0, near + 1e-3), b(100, 0, 0, near - 1e-3), e(1e-6, 1e-6, 0, 1e-6);
+    const ClipEnd in{a, e, glm::abs(a), a.w - near, e.w}, out{b, e, glm::abs(b), b.w - near, e.w};
+    const glm::dvec4 bound = clip_step_error(in, out);
+    auto cut = [&](const glm::dvec4& p, const glm::dvec4& q) {
+        const double t = (p.w - near) / ((p.w - near) - (q.w - near));
+        return p + t * (q - p);
+    };
+    const glm::dvec4 exact = cut(a, b);
+    double worst = 0.0;  // the cut's largest x move over the endpoints moved by +-e
+    for (int corner = 0; corner < 16; ++corner) {
+        auto sign = [&](int bit) { return corner & (1 << bit) ? 1.0 : -1.0; };
+        const glm::dvec4 a_moved = a + glm::dvec4(sign(0) * e.x, 0, 0, sign(1) * e.w);
+        const glm::dvec4 b_moved = b + glm::dvec4(sign(2) * e.x, 0, 0, sign(3) * e.w);
+        worst = std::max(worst, std::fabs(cut(a_moved, b_moved).x - exact.x));
+    }
+    EXPECT_LE(worst, bound.x);
+    EXPECT_LT(bound.x, 2.0 * worst) << "the bound is the slide itself, not a multiple of it";
+    // Inheriting the endpoints' errors alone misses the slide by orders of magnitude.
+    EXPECT_GT(worst, 1000.0 * (e.x + float_gamma(kClipStepRoundings) * (std::fabs(a.x) + std::fabs(b.x))));
 }
 
 TEST(Precision, screenErrorBoundsTheWorstPerturbationOfTheDivide) {

@@ -8,6 +8,7 @@
 
 #include "oracle/reference/precision.h"
 #include "raster/pipeline/camera_rays.h"
+#include "raster/pipeline/vertex_stage.h"
 #include "raster/formats/scene_loader.h"
 #include "tests/support/oracle_test_scenes.h"
 
@@ -41,7 +42,7 @@ TEST(ReferenceGeometry, maxNormDistanceToASegment) {
     }
 }
 
-TEST(ReferenceGeometry, aTriangleInsideTheViewKeepsItsThreeEdgesAndProjectsLikeTheVertexStage) {
+TEST(ReferenceGeometry, aTriangleInsideTheViewKeepsItsThreeEdgesAndProjectsLikeRastersVertexStage) {
     const Scene scene = scene_with_triangles({{{{-1, -1, -3}, {1, -1, -3}, {0, 1, -4}}}}, camera_at_origin(), 200, 100);
     const ReferenceGeometry reference = reference_for(scene);
     ASSERT_EQ(reference.polygon(0).count, 3u);

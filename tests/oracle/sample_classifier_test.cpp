@@ -216,7 +216,7 @@ TEST(Facing, aDisagreementOverATriangleTooCloseToEdgeOnIsAmbiguousOnlyWhileItsFa
 
 TEST(SampleClasses, namesAndGroups) {
     EXPECT_STREQ(to_string(SampleClass::edge_band), "edge_band");
-    EXPECT_STREQ(to_string(SampleClass::color), "color");
+    EXPECT_STREQ(to_string(SampleClass::depth), "depth");
     EXPECT_TRUE(is_ambiguous(SampleClass::clip_boundary));
     EXPECT_TRUE(is_ambiguous(SampleClass::facing));
     EXPECT_FALSE(is_ambiguous(SampleClass::visibility));

@@ -9,8 +9,8 @@
 #include <glm/vec3.hpp>
 
 #include "oracle/reference/reference_geometry.h"
+#include "oracle/reference/scene_geometry.h"
 #include "raster/scene/scene.h"
-#include "raster/pipeline/vertex_stage.h"
 
 namespace raster::oracle::testing {
 
@@ -47,9 +47,7 @@ inline Camera camera_at_origin(float fov_degrees = 45.0f, float near = 0.1f, flo
     return camera;
 }
 
-// The reference geometry of a scene, from the real vertex stage's output (as the comparator builds it).
-inline ReferenceGeometry reference_for(const Scene& scene) {
-    return ReferenceGeometry(scene, run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading)));
-}
+// The reference geometry of a scene, as the comparison builds it.
+inline ReferenceGeometry reference_for(const Scene& scene) { return ReferenceGeometry(scene, oracle_scene(scene)); }
 
 }  // namespace raster::oracle::testing

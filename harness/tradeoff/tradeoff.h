@@ -12,18 +12,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/tradeoff/tradeoff_modes.h"
 #include "oracle/reference/ray_caster.h"
-#include "oracle/tradeoff/tradeoff_modes.h"
 #include "raster/image/image.h"
-#include "raster/scene/scene.h"
 #include "raster/pipeline/vertex_stage.h"
+#include "raster/scene/scene.h"
 
-namespace raster::oracle {
+namespace raster::harness {
 
 struct TradeoffOptions {
     int runs = 5;            // timed frames per mode (after an untimed warm-up frame); the median is reported
     int reference_grid = 8;  // the reference oracle image has reference_grid^2 samples per pixel on a regular grid
-    OracleMode oracle_mode = OracleMode::robust;
+    oracle::OracleMode oracle_mode = oracle::OracleMode::robust;
     int threads = 0;  // 0 = all cores, for raster, the oracle and the comparator
 };
 
@@ -55,9 +55,10 @@ struct SceneTradeoff {
 // The median (the mean of the two middle values for an even count); 0 for none.
 double median(std::vector<double> values);
 
-// Per scene triangle, the exact screen area in px^2 of its part inside the view volume (clipped in double against
-// near, far and the four side planes, so inside the viewport); 0 for a culled triangle or one outside the volume.
-std::vector<double> exact_triangle_areas(const Scene& scene, const TransformedScene& geometry);
+// Per scene triangle, the exact screen area in px^2 of its part inside the view volume (the oracle's exact
+// clipping against near, far and the four side planes, so inside the viewport); 0 for a culled triangle or one
+// outside the volume.
+std::vector<double> exact_triangle_areas(const Scene& scene);
 
 // Per scene triangle, how many samples its snapped setups cover under the exact integer `covers` test, over their
 // bounding boxes, before any depth test: what the mode's setup, snapping and sample positions make of its area.
@@ -76,8 +77,8 @@ double color_rmse(const Image& a, const Image& b);
 // visibility buffer, 20 bytes per sample, and the image), else what is wrong.
 std::string reference_problem(const RenderSettings& settings, int grid);
 
-// The oracle's image of `scene` at grid^2 samples per pixel on a regular grid (SSAA, sample positions at 16 sub-pixel
-// bits), shaded with raster's reference shader: the "ground truth" picture. Throws OracleError if Embree fails.
+// The oracle's own image of `scene` at grid^2 samples per pixel on a regular grid (SSAA, sample positions at 16
+// sub-pixel bits): the "ground truth" picture. Throws OracleError if Embree fails.
 Image reference_image(const Scene& scene, int grid, const TradeoffOptions& options);
 
 // Whether each (time, error) point is on the Pareto front: no other point is <= in both and < in one. Equal points
@@ -101,4 +102,4 @@ nlohmann::json tradeoff_json(const std::vector<SceneTradeoff>& scenes, const Tra
 // coverage_error, on_front (0 or 1). Fields with a comma, quote or newline are quoted.
 std::string tradeoff_csv(const std::vector<SceneTradeoff>& scenes);
 
-}  // namespace raster::oracle
+}  // namespace raster::harness

@@ -1,5 +1,5 @@
 // Speed against accuracy: timing, the oracle comparison, colour RMSE, coverage error and the Pareto front per mode.
-#include "oracle/tradeoff/tradeoff.h"
+#include "harness/tradeoff/tradeoff.h"
 
 #include <algorithm>
 #include <chrono>
@@ -9,20 +9,20 @@
 #include <limits>
 #include <stdexcept>
 
-#include "oracle/compare/scene_comparison.h"
+#include "harness/comparison/scene_comparison.h"
+#include "oracle/reference/oracle_image.h"
 #include "oracle/reference/reference_geometry.h"
+#include "oracle/reference/scene_geometry.h"
 #include "raster/core/conventions.h"
 #include "raster/core/parallel.h"
+#include "raster/core/stopwatch.h"
 #include "raster/pipeline/front_end.h"
 #include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/render.h"
-#include "raster/pipeline/resolve.h"
 #include "raster/pipeline/sample_pattern.h"
-#include "raster/pipeline/shade.h"
 #include "raster/scene/validation.h"
-#include "raster/core/stopwatch.h"
 
-namespace raster::oracle {
+namespace raster::harness {
 namespace {
 
 
@@ -69,8 +69,9 @@ double median(std::vector<double> values) {
     return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
-std::vector<double> exact_triangle_areas(const Scene& scene, const TransformedScene& geometry) {
-    const ReferenceGeometry reference(scene, geometry);
+std::vector<double> exact_triangle_areas(const Scene& scene) {
+    const oracle::OracleScene geometry = oracle::oracle_scene(scene);
+    const oracle::ReferenceGeometry reference(scene, geometry);
     std::vector<double> areas(reference.size(), 0.0);
     for (uint32_t id = 0; id < reference.size(); ++id) {
         if (reference.polygon(id).culled) continue;
@@ -144,18 +145,18 @@ Image reference_image(const Scene& scene, int grid, const TradeoffOptions& optio
     reference.settings.pattern = SamplePattern::grid;
     reference.settings.msaa = false;
     reference.settings.snap_bits = kMaxSnapBits;  // sample positions as exact as the fixed-point grid allows
-    const TransformedScene geometry = run_vertex_stage(reference, vertex_stage_needs(reference.settings.shading));
-    VisibilityBuffer visibility;
-    OracleOptions oracle_options;
+    const oracle::OracleScene geometry = oracle::oracle_scene(reference);
+    oracle::SampleBuffer visibility;
+    oracle::OracleOptions oracle_options;
     oracle_options.mode = options.oracle_mode;
     oracle_options.threads = options.threads;
-    render_oracle(reference, geometry, oracle_options, visibility);
-    const Shader shader(reference, geometry);
-    ResolveParams params;
-    params.background = reference.settings.background;
-    params.threads = options.threads;
-    Image image;
-    resolve_image(visibility, shader, params, image);
+    oracle::render_oracle(reference, geometry, oracle_options, visibility);
+    const oracle::OracleShader shader(reference, geometry);
+    const oracle::ResolveSettings resolve{reference.settings.samples, false, false,
+                                          glm::dvec3(reference.settings.background)};
+    const oracle::OracleImage pixels = oracle::render_image(shader, visibility, resolve, options.threads);
+    Image image(pixels.width, pixels.height, pixels.channels);
+    image.pixels = pixels.pixels;
     return image;
 }
 
@@ -195,8 +196,7 @@ SceneTradeoff measure_scene(const Scene& scene, const std::vector<const Tradeoff
     auto start = Clock::now();
     const Image reference = reference_image(scene, options.reference_grid, options);
     out.reference_ms = milliseconds_since(start);
-    const std::vector<double> areas =
-        exact_triangle_areas(scene, run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading)));
+    const std::vector<double> areas = exact_triangle_areas(scene);
     for (double area : areas) out.exact_area += area;
 
     // Accuracy, one mode at a time (each comparison holds two full visibility buffers).
@@ -215,8 +215,8 @@ SceneTradeoff measure_scene(const Scene& scene, const std::vector<const Tradeoff
         {
             Comparison comparison = compare_scene(work, compare_options);
             result.samples = uint64_t(comparison.width) * uint64_t(comparison.height) * uint64_t(comparison.samples);
-            result.genuine = comparison.counts.genuine_total();
-            result.ambiguous = comparison.counts.ambiguous_total();
+            result.genuine = comparison.genuine_total();
+            result.ambiguous = comparison.visibility.counts.ambiguous_total();
             result.color_rmse = color_rmse(comparison.raster.image, reference);
             images[i] = std::move(comparison.raster.image.pixels);
         }
@@ -299,7 +299,7 @@ nlohmann::json tradeoff_json(const std::vector<SceneTradeoff>& scenes, const Tra
             {"reference",
              {{"grid", options.reference_grid},
               {"samples_per_pixel", options.reference_grid * options.reference_grid},
-              {"oracle_mode", to_string(options.oracle_mode)}}},
+              {"oracle_mode", oracle::to_string(options.oracle_mode)}}},
             {"scenes", scene_list}};
 }
 
@@ -321,4 +321,4 @@ std::string tradeoff_csv(const std::vector<SceneTradeoff>& scenes) {
     return csv;
 }
 
-}  // namespace raster::oracle
+}  // namespace raster::harness

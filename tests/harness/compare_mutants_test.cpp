@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "oracle/compare/scene_comparison.h"
+#include "harness/comparison/scene_comparison.h"
 #include "raster/formats/scene_loader.h"
 #include "mutants/catalogue.h"
 #include "tests/support/oracle_test_scenes.h"
@@ -38,21 +38,14 @@ const Caught kCaught[] = {
 };
 
 // The scene of `c` compared with the oracle, rendered by `stages` on `path` (a mutant's, or the real ones).
-Comparison compare_corpus(const Caught& c, const PipelineStages& stages, RasterPath path = RasterPath::tiled) {
+harness::Comparison compare_corpus(const Caught& c, const PipelineStages& stages, RasterPath path = RasterPath::tiled) {
     Scene scene = load_scene(kCorpus + c.scene);
     scene.settings.samples = 1;
     if (c.near > 0.0f) scene.camera.near = c.near;
     scene.settings.cull_backfaces = c.cull;
-    ComparisonOptions options;
+    harness::ComparisonOptions options;
     options.raster_path = path;
-    return compare_scene(scene, options, stages);
-}
-
-std::string reasons(const Comparison& c) {
-    std::string text;
-    for (SampleClass k : {SampleClass::visibility, SampleClass::barycentrics, SampleClass::depth, SampleClass::color})
-        if (c.counts.count(k)) text += std::string(text.empty() ? "" : ", ") + to_string(k) + " " + std::to_string(c.counts.count(k));
-    return text.empty() ? "-" : text;
+    return harness::compare_scene(scene, options, stages);
 }
 
 TEST(OracleCatchesMutants, eachListedBugGivesGenuineDisagreementsWhereTheCorrectRasterizerGivesNone) {
@@ -62,16 +55,16 @@ TEST(OracleCatchesMutants, eachListedBugGivesGenuineDisagreementsWhereTheCorrect
     for (const Caught& c : kCaught) {
         const std::string scene = std::string(c.scene) + (c.near > 0 ? ", near " + std::to_string(int(c.near)) : "") +
                                   (c.cull ? ", culled" : "");
-        if (!correct.count(scene)) correct[scene] = compare_corpus(c, PipelineStages{}).counts.genuine_total();
+        if (!correct.count(scene)) correct[scene] = compare_corpus(c, PipelineStages{}).genuine_total();
         EXPECT_EQ(correct[scene], 0u) << scene;
         const mutants::Mutant& mutant = mutants::mutant(c.mutant);
-        const Comparison faulty = compare_corpus(c, mutant.stages, mutant.path);
-        const uint64_t genuine = faulty.counts.genuine_total();
+        const harness::Comparison faulty = compare_corpus(c, mutant.stages, mutant.path);
+        const uint64_t genuine = faulty.genuine_total();
         EXPECT_GT(genuine, 0u) << c.mutant << " on " << scene;
         char line[512];
         std::snprintf(line, sizeof line, "  %-60s %-22s %7llu  %9llu  %s\n", c.mutant, scene.c_str(),
                       static_cast<unsigned long long>(genuine), static_cast<unsigned long long>(correct[scene]),
-                      reasons(faulty).c_str());
+                      harness::genuine_reasons(faulty).c_str());
         table += line;
     }
     std::printf("%s", table.c_str());
@@ -86,11 +79,12 @@ TEST(OracleCatchesMutants, missingAttenuationIsAColourDisagreement) {
     light.position = glm::vec3(0.0f, 0.0f, -1.0f);
     light.attenuate = true;
     scene.lights.push_back(light);
-    const Comparison correct = compare_scene(scene, ComparisonOptions{});
-    EXPECT_EQ(correct.counts.genuine_total(), 0u);
-    const Comparison faulty = compare_scene(scene, ComparisonOptions{}, mutants::mutant("1/r^2 attenuation missing").stages);
-    EXPECT_GT(faulty.counts.count(SampleClass::color), 0u);
-    EXPECT_EQ(faulty.counts.count(SampleClass::visibility), 0u);  // only the colour is wrong
+    const harness::Comparison correct = harness::compare_scene(scene, harness::ComparisonOptions{});
+    EXPECT_EQ(correct.genuine_total(), 0u);
+    const harness::Comparison faulty =
+        harness::compare_scene(scene, harness::ComparisonOptions{}, mutants::mutant("1/r^2 attenuation missing").stages);
+    EXPECT_GT(faulty.colour_genuine_pixels, 0u);
+    EXPECT_EQ(faulty.visibility.counts.genuine_total(), 0u);  // only the colour is wrong
 }
 
 }  // namespace

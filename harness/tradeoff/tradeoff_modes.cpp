@@ -1,9 +1,9 @@
 // The catalogue of speed/accuracy modes: one-axis variations of a scene's settings and three presets.
-#include "oracle/tradeoff/tradeoff_modes.h"
+#include "harness/tradeoff/tradeoff_modes.h"
 
 #include <utility>
 
-namespace raster::oracle {
+namespace raster::harness {
 namespace {
 
 TradeoffMode snap(int bits) {
@@ -152,4 +152,4 @@ nlohmann::json mode_settings_json(const RenderSettings& s) {
             {"hierarchical_z", s.modes.hierarchical_z}};
 }
 
-}  // namespace raster::oracle
+}  // namespace raster::harness

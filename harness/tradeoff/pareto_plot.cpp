@@ -1,11 +1,11 @@
 // The trade-off plot as hand-written SVG: axes with ticks, labelled points, the Pareto front as a staircase.
-#include "oracle/tradeoff/pareto_plot.h"
+#include "harness/tradeoff/pareto_plot.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-namespace raster::oracle {
+namespace raster::harness {
 namespace {
 
 constexpr double kPanelWidth = 800, kPanelHeight = 500;
@@ -235,4 +235,4 @@ std::string pareto_svg(const std::vector<SceneTradeoff>& scenes, int reference_g
     return svg + "</svg>\n";
 }
 
-}  // namespace raster::oracle
+}  // namespace raster::harness

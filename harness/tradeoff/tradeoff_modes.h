@@ -11,7 +11,7 @@
 
 #include "raster/scene/scene.h"
 
-namespace raster::oracle {
+namespace raster::harness {
 
 struct TradeoffMode {
     std::string name;         // e.g. "baseline", "snap4", "edges-float", "grid8x8", "affine", "fastest"
@@ -43,4 +43,4 @@ std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline);
 // {snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z}
 nlohmann::json mode_settings_json(const RenderSettings& settings);
 
-}  // namespace raster::oracle
+}  // namespace raster::harness

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "oracle/tradeoff/tradeoff.h"
+#include "harness/tradeoff/tradeoff.h"
 
-namespace raster::oracle {
+namespace raster::harness {
 
 // The whole SVG document, one panel per scene stacked vertically. Every text is XML-escaped.
 std::string pareto_svg(const std::vector<SceneTradeoff>& scenes, int reference_grid);
 
-}  // namespace raster::oracle
+}  // namespace raster::harness

@@ -1,6 +1,6 @@
 // Speed against accuracy (`raster tradeoff`): the Pareto front, the exact area, the coverage error and colour RMSE
 // falling with more samples, the mode catalogue, the written files, the report's link, and the command's bad input.
-#include "oracle/tradeoff/tradeoff.h"
+#include "harness/tradeoff/tradeoff.h"
 
 #include <cmath>
 #include <filesystem>
@@ -13,13 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/cli.h"
-#include "oracle/tradeoff/pareto_plot.h"
+#include "harness/tradeoff/pareto_plot.h"
 #include "oracle/report/report.h"
-#include "oracle/tradeoff/tradeoff_modes.h"
+#include "harness/tradeoff/tradeoff_modes.h"
 #include "raster/formats/scene_loader.h"
 #include "tests/support/temp_dir.h"
 
-namespace raster::oracle {
+namespace raster::harness {
 namespace {
 
 namespace fs = std::filesystem;
@@ -149,7 +149,7 @@ TEST(TradeoffMeasures, theExactAreaIsTheHandComputedAreaClippedToTheViewport) {
     // Screen (50, 50), (70, 50), (50, 20): legs of 20 and 30 px.
     const Scene inside = hand_scene("[[0, 0, 0], [2, 0, 0], [0, 3, 0]]", "[[0, 1, 2]]");
     const std::vector<double> areas =
-        exact_triangle_areas(inside, run_vertex_stage(inside, vertex_stage_needs(inside.settings.shading)));
+        exact_triangle_areas(inside);
     ASSERT_EQ(areas.size(), 1u);
     EXPECT_NEAR(areas[0], 300.0, 1e-3);
     // Screen (50, 50), (150, 50), (50, -50): the viewport keeps the square [50, 100] x [0, 50]. The second triangle
@@ -157,7 +157,7 @@ TEST(TradeoffMeasures, theExactAreaIsTheHandComputedAreaClippedToTheViewport) {
     const Scene clipped =
         hand_scene("[[0, 0, 0], [10, 0, 0], [0, 10, 0], [0, 0, 6], [1, 0, 6], [0, 1, 6]]", "[[0, 1, 2], [3, 4, 5]]");
     const std::vector<double> clipped_areas =
-        exact_triangle_areas(clipped, run_vertex_stage(clipped, vertex_stage_needs(clipped.settings.shading)));
+        exact_triangle_areas(clipped);
     ASSERT_EQ(clipped_areas.size(), 2u);
     EXPECT_NEAR(clipped_areas[0], 2500.0, 1e-2);
     EXPECT_EQ(clipped_areas[1], 0.0);
@@ -166,7 +166,7 @@ TEST(TradeoffMeasures, theExactAreaIsTheHandComputedAreaClippedToTheViewport) {
 TEST(TradeoffMeasures, coveredSamplesOverSamplesPerPixelApproachTheExactArea) {
     Scene scene = hand_scene("[[0, 0, 0], [2, 0, 0], [0, 3, 0]]", "[[0, 1, 2]]");
     const std::vector<double> areas =
-        exact_triangle_areas(scene, run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading)));
+        exact_triangle_areas(scene);
     scene.settings.samples = 256;
     scene.settings.pattern = SamplePattern::grid;
     const std::vector<uint64_t> covered =
@@ -444,14 +444,14 @@ TEST(TradeoffReport, theSectionMarksTheFrontAndSurvivesMistypedFields) {
                                           {"on_front", true}},
                                          {{"mode", "slow"}, {"median_ms", "not a number"}, {"on_front", false}},
                                          42}}}}}};
-    const std::string html = report_html({}, TradeoffLink{"tradeoff", results});
+    const std::string html = oracle::report_html({}, oracle::TradeoffLink{"tradeoff", results});
     EXPECT_NE(html.find("Speed against accuracy"), std::string::npos);
     EXPECT_NE(html.find("teapot&lt;1&gt;"), std::string::npos);
     EXPECT_EQ(occurrences(html, "<tr class=\"on-front\">"), 1u);
     EXPECT_NE(html.find("<td>9.250</td>"), std::string::npos);
     EXPECT_NE(html.find(">slow</td><td>-</td>"), std::string::npos);
-    EXPECT_EQ(report_html({}).find("Speed against accuracy"), std::string::npos);
+    EXPECT_EQ(oracle::report_html({}).find("Speed against accuracy"), std::string::npos);
 }
 
 }  // namespace
-}  // namespace raster::oracle
+}  // namespace raster::harness

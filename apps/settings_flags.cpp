@@ -1,0 +1,51 @@
+// The settings flags: registration with CLI11 and their application to a scene.
+#include "apps/settings_flags.h"
+
+#include "raster/core/errors.h"
+#include "raster/scene/validation.h"
+
+namespace raster::cli {
+
+void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
+    command.add_option("--samples", flags.samples, "Samples per pixel: 1, 2, 4, 8, 16 (standard) or N*N (grid)");
+    command.add_option("--pattern", flags.pattern, "Sample pattern: standard (Vulkan positions) or grid (N x N)")
+        ->check(CLI::IsMember({"standard", "grid"}));
+    command.add_flag("--msaa", flags.msaa, "Shade once per pixel per triangle (MSAA) instead of every sample (SSAA)");
+    command.add_option("--shading", flags.shading, "Shading: unlit, flat, gouraud, phong or blinn-phong")
+        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "phong", "blinn-phong"}));
+    command.add_option("--snap-bits", flags.snap_bits, "Sub-pixel bits for vertex snapping, 1..16 (default 8)");
+    command.add_option("--cull", flags.cull, "Back-face culling: none or back")->check(CLI::IsMember({"none", "back"}));
+    command.add_option("--edges", flags.edges, "Edge arithmetic: fixed (64-bit, watertight; default) or float")
+        ->check(CLI::IsMember({"fixed", "float"}));
+    command.add_option("--interpolation", flags.interpolation, "perspective (default) or affine")
+        ->check(CLI::IsMember({"perspective", "affine"}));
+    command.add_option("--depth-format", flags.depth_format,
+                       "Depth test on reversed-z float (default), float z/w, or fixed24 (24-bit z/w)")
+        ->check(CLI::IsMember({"reversed-z", "float", "fixed24"}));
+    command.add_option("--clipping", flags.clipping, "full (default) or guard-band (side planes only beyond 4x the view)")
+        ->check(CLI::IsMember({"full", "guard-band"}));
+    command.add_option("--hierarchical-z", flags.hierarchical_z,
+                       "Hierarchical-Z occlusion culling: on (default) or off; never changes a pixel")
+        ->check(CLI::IsMember({"on", "off"}));
+    command.add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
+    command.add_option("--threads", flags.threads, "Worker threads, 0 = all cores (the output is the same for any count)")
+        ->check(CLI::Range(0, 256));
+}
+
+void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
+    RenderSettings& settings = scene.settings;
+    if (flags.samples) settings.samples = *flags.samples;
+    if (flags.pattern) parse_sample_pattern(*flags.pattern, settings.pattern);
+    if (flags.msaa) settings.msaa = true;
+    if (flags.shading) parse_shading_mode(*flags.shading, settings.shading);
+    if (flags.snap_bits) settings.snap_bits = *flags.snap_bits;
+    if (flags.cull) settings.cull_backfaces = *flags.cull == "back";
+    if (flags.edges) parse_edge_arithmetic(*flags.edges, settings.modes.edges);
+    if (flags.interpolation) parse_interpolation(*flags.interpolation, settings.modes.interpolation);
+    if (flags.depth_format) parse_depth_format(*flags.depth_format, settings.modes.depth);
+    if (flags.clipping) parse_clipping(*flags.clipping, settings.modes.clipping);
+    if (flags.hierarchical_z) settings.modes.hierarchical_z = *flags.hierarchical_z == "on";
+    if (std::string problem = settings_problem(settings); !problem.empty()) throw InputError("", 0, 0, problem);
+}
+
+}  // namespace raster::cli

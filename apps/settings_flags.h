@@ -1,0 +1,32 @@
+// The flags that override a scene's render settings, shared by `raster render` and `raster compare`, so that a
+// comparison runs exactly what the same render command line renders.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "raster/scene/scene.h"
+
+namespace raster::cli {
+
+struct SettingsFlags {
+    std::optional<int> samples;
+    std::optional<std::string> pattern;
+    bool msaa = false;
+    std::optional<std::string> shading;
+    std::optional<int> snap_bits;
+    std::optional<std::string> cull;
+    std::optional<std::string> edges, interpolation, depth_format, clipping, hierarchical_z;
+    bool alpha = false;
+    int threads = 0;
+};
+
+// Adds --samples, --pattern, --msaa, --shading, --snap-bits, --cull, the precision modes, --alpha and --threads.
+void register_settings_flags(CLI::App& command, SettingsFlags& flags);
+
+// Applies the flags given to the scene's settings; throws InputError when the result is not a valid frame.
+void apply_settings_flags(const SettingsFlags& flags, Scene& scene);
+
+}  // namespace raster::cli

@@ -1,0 +1,70 @@
+// One comparison run: a scene through exactly the path `raster render` runs (the tiled renderer, SIMD and
+// hierarchical Z as the scene and options say, its visibility buffer kept) and through the independent oracle;
+// every sample classed, and raster's image, as its PNG and its PPM writer encode it, checked pixel by pixel
+// against the oracle's colour bounds. Counts, times, JSON and a summary.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "oracle/compare/colour_check.h"
+#include "oracle/compare/sample_classifier.h"
+#include "oracle/reference/ray_caster.h"
+#include "raster/image/image.h"
+#include "raster/pipeline/render.h"
+#include "raster/scene/scene.h"
+
+namespace raster::harness {
+
+struct ComparisonOptions {
+    oracle::OracleMode mode = oracle::OracleMode::robust;
+    int threads = 0;  // 0 = all cores, for both renderers and the comparator; results do not depend on it
+    RasterPath raster_path = RasterPath::tiled;  // raster's renderer (a mutant of the reference rasterizer: reference)
+    bool alpha = false;                          // `raster render --alpha`: RGBA, alpha = coverage
+};
+
+struct Comparison {
+    std::string scene;  // the scene file
+    int width = 0, height = 0, samples = 0;
+    oracle::OracleMode mode = oracle::OracleMode::robust;
+    RenderResult raster;                      // raster's visibility buffer and image
+    oracle::SampleBuffer oracle_visibility;   // the oracle's
+    Image oracle_image;                       // the oracle's own colours at its hits, resolved
+    oracle::VisibilityComparison visibility;  // per sample
+    oracle::ColourCheck png, ppm;             // per pixel, raster's image decoded from each file format
+    std::vector<uint8_t> colour_genuine;      // per pixel: outside its bounds in either file
+    uint64_t colour_genuine_pixels = 0;       // how many
+    double raster_ms = 0;   // raster's in-process frame time (RenderStats::ms_total)
+    double oracle_ms = 0;   // the oracle: geometry, BVH build, one ray per sample, shading and resolve
+    double compare_ms = 0;  // reference geometry, classification, colour bounds and checks
+
+    // Genuine samples plus pixels of genuine colour: 0 means raster agrees with the oracle.
+    uint64_t genuine_total() const { return visibility.counts.genuine_total() + colour_genuine_pixels; }
+};
+
+// Renders and compares. `stages` are raster's (a test passes a mutant's); the oracle has none of them. The scene
+// must be valid (scene/validation.h). Throws OracleError if Embree fails.
+Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, const PipelineStages& stages = {});
+
+// {scene, width, height, samples, oracle_mode, agree, ambiguous: {edge_band, depth_tie, clip_boundary, facing},
+//  ambiguous_total, ambiguous_fraction: {...}, genuine: {visibility, barycentrics, depth, color}, genuine_total,
+//  pixels: {judged, ambiguous, color_png, color_ppm}, max_color_error, color_disagreements: [...],
+//  raster_ms, oracle_ms, compare_ms}
+nlohmann::json comparison_json(const Comparison& comparison);
+
+// A few lines for a person: the counts by reason, the colour check and the times.
+std::string comparison_summary(const Comparison& comparison);
+
+// The genuine counts by reason, "visibility 12, color 3", or "-" when there are none.
+std::string genuine_reasons(const Comparison& comparison);
+
+// The first `shown` genuine samples (where, and what each renderer saw there) and colour disagreements (the
+// bytes, the allowed ranges and the oracle's), one per line, for a failure message.
+std::string genuine_details(const Comparison& comparison, int shown = 8);
+
+// The comparison's disagreement map (oracle/compare/diff_map.h) over raster's image.
+Image diff_map(const Comparison& comparison);
+
+}  // namespace raster::harness

@@ -1,0 +1,87 @@
+// The colour check: the interval resolve of each judged pixel, then raster's image against it.
+#include "oracle/compare/colour_check.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "raster/core/parallel.h"
+
+namespace raster::oracle {
+
+PixelBounds pixel_bounds(const ColourInputs& in) {
+    const SampleBuffer& oracle = *in.oracle;
+    const int samples = oracle.samples;
+    PixelBounds out;
+    out.width = oracle.width;
+    out.height = oracle.height;
+    out.channels = in.resolve.alpha ? 4 : 3;
+    const size_t pixels = static_cast<size_t>(out.width) * out.height;
+    out.state.assign(pixels, PixelState::judged);
+    out.ranges.assign(pixels * out.channels, ByteRange{});
+    parallel_for(static_cast<size_t>(out.height), in.threads, [&](size_t row) {
+        const int py = static_cast<int>(row);
+        std::vector<ResolveSample> box(static_cast<size_t>(samples));
+        for (int px = 0; px < out.width; ++px) {
+            const size_t pixel = static_cast<size_t>(py) * out.width + px;
+            bool genuine = false, ambiguous = false;
+            for (int s = 0; s < samples; ++s) {
+                const size_t at = oracle.index(px, py, s);
+                const SampleClass verdict = (*in.classes)[at];
+                genuine |= is_genuine(verdict);
+                ambiguous |= is_ambiguous(verdict);
+                const uint32_t id = oracle.triangle[at];
+                box[s] = {id, Interval3(glm::dvec3(oracle.bary[at]))};
+                if (id == kNoTriangle || is_genuine(verdict) || is_ambiguous(verdict)) continue;
+                const glm::dvec2 screen = glm::dvec2(px, py) + in.offsets[static_cast<size_t>(s)];
+                const glm::dvec3 tolerance = agreement_tolerance(*in.reference, id, screen).bary;
+                for (int k = 0; k < 3; ++k) box[s].bary[k] = box[s].bary[k].widened(tolerance[k]);
+            }
+            out.state[pixel] = genuine ? PixelState::genuine : ambiguous ? PixelState::ambiguous : PixelState::judged;
+            if (out.state[pixel] != PixelState::judged) continue;
+            const PixelColour allowed = resolve_pixel(*in.shader, in.resolve, box.data());
+            for (int c = 0; c < out.channels; ++c) out.ranges[pixel * out.channels + c] = byte_range(allowed.channel[c]);
+        }
+    });
+    return out;
+}
+
+ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, const OracleImage& oracle) {
+    if (image.width != bounds.width || image.height != bounds.height || oracle.width != bounds.width ||
+        oracle.height != bounds.height || oracle.channels != bounds.channels)
+        throw std::invalid_argument("check_colours: the image and the bounds have different sizes");
+    const int channels = std::min(bounds.channels, image.channels);
+    ColourCheck out;
+    out.genuine_pixels.assign(static_cast<size_t>(bounds.width) * bounds.height, 0);
+    for (int y = 0; y < bounds.height; ++y)
+        for (int x = 0; x < bounds.width; ++x) {
+            const size_t pixel = static_cast<size_t>(y) * bounds.width + x;
+            if (bounds.state[pixel] == PixelState::ambiguous) ++out.ambiguous;
+            if (bounds.state[pixel] != PixelState::judged) continue;
+            ++out.judged;
+            const uint8_t* shown = image.at(x, y);
+            bool inside = true;
+            for (int c = 0; c < channels; ++c) {
+                const size_t at = pixel * bounds.channels + c;
+                inside = inside && bounds.ranges[at].contains(shown[c]);
+                out.max_difference = std::max(out.max_difference, std::abs(int(shown[c]) - int(oracle.pixels[at])));
+            }
+            if (inside) continue;
+            ++out.genuine;
+            out.genuine_pixels[pixel] = 1;
+            if (out.first.size() >= kListedColourDisagreements) continue;
+            ColourDisagreement d;
+            d.x = x;
+            d.y = y;
+            d.channels = channels;
+            for (int c = 0; c < channels; ++c) {
+                d.raster[c] = shown[c];
+                d.oracle[c] = oracle.pixels[pixel * bounds.channels + c];
+                d.allowed[c] = bounds.ranges[pixel * bounds.channels + c];
+            }
+            out.first.push_back(d);
+        }
+    return out;
+}
+
+}  // namespace raster::oracle

@@ -1,0 +1,63 @@
+// The colour check: per pixel, the bytes a correct raster may write there (the oracle's own shading over each
+// sample's barycentric tolerance, resolved as the README defines it, its float error included), and raster's image,
+// decoded from the bytes it wrote, against them. A pixel whose samples do not all agree is not judged here: its
+// samples' own classes say why.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "oracle/compare/raster_output.h"
+#include "oracle/compare/sample_classifier.h"
+#include "oracle/reference/oracle_image.h"
+#include "oracle/reference/pixel_resolve.h"
+#include "oracle/reference/shading_precision.h"
+
+namespace raster::oracle {
+
+enum class PixelState : uint8_t {
+    judged,     // every sample agrees: the colour is checked against `ranges`
+    ambiguous,  // some sample is ambiguous (and none genuine)
+    genuine,    // some sample disagrees genuinely
+};
+
+struct PixelBounds {
+    int width = 0, height = 0, channels = 3;
+    std::vector<PixelState> state;  // per pixel
+    std::vector<ByteRange> ranges;  // per pixel and channel, for judged pixels
+};
+
+struct ColourInputs {
+    const SampleBuffer* oracle = nullptr;
+    const std::vector<SampleClass>* classes = nullptr;  // compare_visibility's
+    const ReferenceGeometry* reference = nullptr;
+    const OracleShader* shader = nullptr;
+    ResolveSettings resolve;
+    std::vector<glm::dvec2> offsets;  // the sample positions inside a pixel
+    int threads = 0;
+};
+
+// For every pixel whose samples all agree, the bytes raster may write. Deterministic for any thread count.
+PixelBounds pixel_bounds(const ColourInputs& inputs);
+
+// A pixel of raster's image outside its range, with what the report shows on hover.
+struct ColourDisagreement {
+    int x = 0, y = 0, channels = 3;
+    std::array<int, 4> raster{}, oracle{};
+    std::array<ByteRange, 4> allowed{};
+};
+inline constexpr size_t kListedColourDisagreements = 200;
+
+struct ColourCheck {
+    uint64_t judged = 0, ambiguous = 0, genuine = 0;  // pixels
+    int max_difference = 0;                     // largest |raster - oracle| byte difference over judged pixels
+    std::vector<uint8_t> genuine_pixels;        // per pixel: 1 where the colour is outside its range
+    std::vector<ColourDisagreement> first;      // the first kListedColourDisagreements, row by row
+};
+
+// Checks `image` (the same size; a PPM has no alpha, so only the channels both have are compared); `oracle` is
+// the oracle's own image, for the differences and the disagreements' listing.
+ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, const OracleImage& oracle);
+
+}  // namespace raster::oracle

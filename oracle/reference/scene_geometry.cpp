@@ -1,0 +1,81 @@
+// The oracle's scene geometry: positions, views and normals in double, and raster's attribute error bounds.
+#include "oracle/reference/scene_geometry.h"
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "oracle/reference/shading_precision.h"
+
+namespace raster::oracle {
+namespace {
+
+glm::dvec3 unit_or_zero(const glm::dvec3& v) {
+    const double length = glm::length(v);
+    return length > 0.0 ? v / length : glm::dvec3(0.0);
+}
+
+bool needs_world(ShadingMode mode) { return mode != ShadingMode::unlit; }
+bool needs_normals(ShadingMode mode) {
+    return mode == ShadingMode::gouraud || mode == ShadingMode::phong || mode == ShadingMode::blinn_phong;
+}
+
+// The vertex normals of one mesh and raster's error bounds for them.
+void mesh_normals(const SceneMesh& mesh, uint32_t first, OracleScene& out) {
+    const MeshData& data = mesh.data;
+    const size_t count = data.positions.size();
+    if (data.normals.size() == count) {
+        const glm::dmat3 to_world = glm::transpose(glm::inverse(glm::dmat3{glm::mat3(mesh.model)}));
+        for (size_t i = 0; i < count; ++i) {
+            out.normal[first + i] = unit_or_zero(to_world * glm::dvec3(data.normals[i]));
+            out.normal_error[first + i] = raster_file_normal_error(mesh.model, data.normals[i]);
+        }
+        return;
+    }
+    std::vector<std::vector<TriangleIndices>> faces_of(count);
+    for (const TriangleIndices& t : data.triangles) {
+        const glm::dvec3 n = glm::cross(out.world[first + t.v[1]] - out.world[first + t.v[0]],
+                                        out.world[first + t.v[2]] - out.world[first + t.v[0]]);
+        const double length = glm::length(n);
+        for (uint32_t corner : t.v) {
+            faces_of[corner].push_back(t);
+            if (length > 0.0) out.normal[first + corner] += n / length;
+        }
+    }
+    for (size_t i = 0; i < count; ++i) {
+        out.normal[first + i] = unit_or_zero(out.normal[first + i]);
+        out.normal_error[first + i] = raster_averaged_normal_error(out.world, out.world_error, faces_of[i], first);
+    }
+}
+
+}  // namespace
+
+OracleScene oracle_scene(const Scene& scene) {
+    OracleScene out;
+    out.camera = oracle_camera(scene.camera, scene.settings.width, scene.settings.height);
+    out.camera_error = raster_camera_error(scene.camera, out.camera);
+    const ShadingMode mode = scene.settings.shading;
+    for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+        const SceneMesh& mesh = scene.meshes[m];
+        const uint32_t first = static_cast<uint32_t>(out.world.size());
+        out.mesh_first_vertex.push_back(first);
+        const glm::dmat4 model(mesh.model);
+        for (const glm::vec3& p : mesh.data.positions) {
+            const glm::dvec3 world(model * glm::dvec4(glm::dvec3(p), 1.0));
+            out.world.push_back(world);
+            out.view.push_back(view_of_world(out.camera, world));
+            if (needs_world(mode)) out.world_error.push_back(raster_world_position_error(mesh.model, p));
+        }
+        for (uint32_t t = 0; t < mesh.data.triangles.size(); ++t) {
+            const auto& v = mesh.data.triangles[t].v;
+            out.triangles.push_back({m, t, {first + v[0], first + v[1], first + v[2]}});
+        }
+    }
+    if (needs_normals(mode)) {
+        out.normal.assign(out.world.size(), glm::dvec3(0.0));
+        out.normal_error.assign(out.world.size(), 0.0);
+        for (uint32_t m = 0; m < scene.meshes.size(); ++m) mesh_normals(scene.meshes[m], out.mesh_first_vertex[m], out);
+    }
+    return out;
+}
+
+}  // namespace raster::oracle

@@ -1,0 +1,119 @@
+// The shading error bounds; the derivations are next to the declarations in shading_precision.h.
+#include "oracle/reference/shading_precision.h"
+
+#include <cmath>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "oracle/reference/precision.h"
+
+namespace raster::oracle {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// |a| x| |b|: the componentwise magnitude of cross(a, b), its two products added.
+glm::dvec3 cross_magnitude(const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 x = glm::abs(a), y = glm::abs(b);
+    return {x.y * y.z + x.z * y.y, x.z * y.x + x.x * y.z, x.x * y.y + x.y * y.x};
+}
+
+// How far a unit vector can move when the vector it normalises, of length `length`, moves by `change` (2-norm):
+// 2 change / length plus the normalisation's own roundings; 2 (anything) when the change can reach the origin.
+double unit_vector_error(double change, double length) {
+    if (!(change < length)) return 2.0;
+    return std::min(2.0, 2.0 * change / length + float_gamma(kNormalizeAttributeRoundings));
+}
+
+}  // namespace
+
+glm::dvec3 raster_world_position_error(const glm::mat4& model, const glm::vec3& position) {
+    glm::dvec3 error(0.0);
+    for (int row = 0; row < 3; ++row) {
+        double magnitude = std::fabs(double(model[3][row]));
+        for (int k = 0; k < 3; ++k) magnitude += std::fabs(double(model[k][row]) * double(position[k]));
+        error[row] = float_gamma(kWorldPositionRoundings) * magnitude;
+    }
+    return error;
+}
+
+double raster_file_normal_error(const glm::mat4& model, const glm::vec3& normal) {
+    const glm::dmat3 m{glm::mat3(model)};
+    const double det = glm::determinant(m);
+    // |det| and D, the magnitude of its expansion along the first column.
+    double magnitude = 0.0;
+    glm::dmat3 minor, minor_magnitude;  // minor[i][j] belongs to the inverse's entry (i, j) (glm: [column][row])
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) {
+            // The cofactor of m's entry (row c, column r), which is the inverse's entry (row r, column c) times det.
+            const int r0 = (c + 1) % 3, r1 = (c + 2) % 3, c0 = (r + 1) % 3, c1 = (r + 2) % 3;
+            minor[c][r] = m[c0][r0] * m[c1][r1] - m[c1][r0] * m[c0][r1];
+            minor_magnitude[c][r] = std::fabs(m[c0][r0] * m[c1][r1]) + std::fabs(m[c1][r0] * m[c0][r1]);
+        }
+    for (int r = 0; r < 3; ++r) magnitude += std::fabs(m[0][r] * minor[0][r]);
+    const double g_det = float_gamma(kDeterminantRoundings) * magnitude;
+    if (!(g_det < std::fabs(det))) return 2.0;
+    // The normal matrix is the inverse's transpose; its entry (row i, column j) is minor[i][j] / det.
+    glm::dvec3 exact(0.0), change(0.0);
+    const glm::dvec3 n(normal);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const double entry = minor[i][j] / det;
+            const double entry_error =
+                (float_gamma(kMinorRoundings) * minor_magnitude[i][j] + std::fabs(minor[i][j]) * g_det / std::fabs(det)) /
+                std::fabs(det);
+            exact[i] += entry * n[j];
+            change[i] += entry_error * std::fabs(n[j]) + float_gamma(3) * std::fabs(entry * n[j]);
+        }
+    return unit_vector_error(glm::length(change), glm::length(exact));
+}
+
+double raster_face_normal_error(const glm::dvec3 world[3], const glm::dvec3 error[3]) {
+    const glm::dvec3 e1 = world[1] - world[0], e2 = world[2] - world[0];
+    const glm::dvec3 de1 = error[1] + error[0] + kFloatUnitRoundoff * glm::abs(e1);
+    const glm::dvec3 de2 = error[2] + error[0] + kFloatUnitRoundoff * glm::abs(e2);
+    const glm::dvec3 dc = cross_magnitude(de1, glm::abs(e2) + de2) + cross_magnitude(e1, de2) +
+                          float_gamma(kCrossRoundingsForNormals) * cross_magnitude(e1, e2);
+    return unit_vector_error(glm::length(dc), glm::length(glm::cross(e1, e2)));
+}
+
+double raster_averaged_normal_error(const std::vector<glm::dvec3>& world, const std::vector<glm::dvec3>& position_error,
+                                    const std::vector<TriangleIndices>& faces, uint32_t first_vertex) {
+    glm::dvec3 sum(0.0);
+    double change = 0.0;
+    for (const TriangleIndices& face : faces) {
+        glm::dvec3 corners[3], errors[3];
+        for (int k = 0; k < 3; ++k) {
+            corners[k] = world[first_vertex + face.v[k]];
+            errors[k] = position_error[first_vertex + face.v[k]];
+        }
+        const glm::dvec3 cross = glm::cross(corners[1] - corners[0], corners[2] - corners[0]);
+        const double length = glm::length(cross);
+        if (length > 0.0) sum += cross / length;
+        change += raster_face_normal_error(corners, errors);
+    }
+    const double faces_count = static_cast<double>(faces.size());
+    change += float_gamma(static_cast<int>(faces.size())) * faces_count * std::sqrt(3.0);
+    return unit_vector_error(change, glm::length(sum));
+}
+
+Interval after_roundings(Interval value, int k) { return value.widened(float_gamma(k) * value.magnitude()); }
+
+Interval3 after_roundings(const Interval3& value, int k) {
+    return {after_roundings(value.x, k), after_roundings(value.y, k), after_roundings(value.z, k)};
+}
+
+ByteRange byte_range(Interval linear) {
+    const double slack = float_gamma(kByteRoundings) * 255.5 / 255.0;
+    return {exact_byte(linear.lo - slack), exact_byte(linear.hi + slack)};
+}
+
+int exact_byte(double linear) {
+    if (!(linear > 0.0)) return 0;
+    if (linear >= 1.0) return 255;
+    return static_cast<int>(std::floor(linear * 255.0 + 0.5));
+}
+
+}  // namespace raster::oracle

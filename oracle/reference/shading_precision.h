@@ -1,0 +1,81 @@
+// The precision model, part 8: how far raster's float shading inputs and arithmetic can be from the README's
+// formula evaluated exactly, so the oracle's colour interval (shader.h) holds every colour a correct raster may
+// write. Each bound is derived next to its constant; the interval arithmetic carries them through the formula.
+#pragma once
+
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "oracle/reference/interval.h"
+#include "raster/scene/mesh.h"
+
+namespace raster::oracle {
+
+// ATTRIBUTES, per vertex (norms are 2-norms, |.| componentwise):
+//  - world position float(M (p, 1)): four products and three sums per component, gamma_4 |M| |(p, 1)|;
+inline constexpr int kWorldPositionRoundings = 4;
+glm::dvec3 raster_world_position_error(const glm::mat4& model, const glm::vec3& position);
+//  - a file normal, normalize(float(N n)) with N = transpose(inverse(mat3(M))) in float. An entry of the inverse
+//    is a 2x2 minor (a b - c d: 3 roundings of |a b| + |c d| =: A) times the reciprocal of the determinant (a
+//    3-term sum of entry times minor: gamma_6 of its magnitude D, then the reciprocal and the product: 2 more):
+//    |dN_ij| <= (gamma_4 A_ij + |minor_ij| gamma_8 D / |det|) / |det|, unbounded when gamma_8 D >= |det|. Then
+//    the product with n (gamma_3 |N| |n|), and a unit vector moves by at most 2 |dv| / |v| plus its own
+//    normalisation's gamma_5;
+inline constexpr int kMinorRoundings = 4;
+inline constexpr int kDeterminantRoundings = 8;
+inline constexpr int kNormalizeAttributeRoundings = 5;
+inline constexpr int kCrossRoundingsForNormals = 2;
+double raster_file_normal_error(const glm::mat4& model, const glm::vec3& normal);
+//  - a face normal normalize(cross(b - a, c - a)) from raster's float world positions (within their errors e of
+//    exact): the edges (one difference each, plus the vertices' errors), the cross product (|de1| x| (|e2| + |de2|)
+//    + |e1| x| |de2| + gamma_2 |e1| x| |e2|, x| the cross product with its two products added), and the unit
+//    vector (2 |dc| / |c| + gamma_5). Where |dc| reaches |c| the direction is unknown (2): the face may even be
+//    skipped as degenerate by one renderer and not the other.
+double raster_face_normal_error(const glm::dvec3 world[3], const glm::dvec3 error[3]);
+//  - an averaged normal: each face's unit normal as above; the sum over F faces (gamma_F of the sum of their
+//    magnitudes, each at most sqrt 3); and the final normalisation (2 |ds| / |s| + gamma_5).
+//    `faces` lists the vertex's faces as triples of vertex indices into `world` and `position_error`.
+double raster_averaged_normal_error(const std::vector<glm::dvec3>& world, const std::vector<glm::dvec3>& position_error,
+                                    const std::vector<TriangleIndices>& faces, uint32_t first_vertex);
+
+// ARITHMETIC. The interval evaluation (shader.cpp) widens each intermediate value by the float error raster's
+// evaluation of it can have, computed from the interval's own magnitude:
+//  - a 3-term dot product of unit vectors: gamma_3 absolute (sum of |a_i b_i| <= |a| |b| = 1);
+//  - a unit vector from a difference (to the light, to the eye): gamma_1 per component for the difference
+//    relative to its operands, then gamma_5 for the normalisation (absolute, per component);
+//  - an interpolated attribute sum_i b_i a_i: gamma_3 of sum_i |b_i| |a_i|;
+//  - the light's radiance colour * intensity (/ r^2): gamma_3 relative; each lit term's product: gamma_2 more;
+//  - the specular power: std::pow, or for integer exponents n <= 256 repeated squaring: at most 16 products,
+//    gamma_16 relative;
+//  - the sum of the ambient and the lights' terms (L + 1 positive terms): gamma_(L+1) relative;
+//  - base * diffuse + specular: gamma_2 relative;
+//  - the resolve: a sum of S colours and a division (gamma_(S+1) of the magnitudes).
+inline constexpr int kDotRoundings = 3;
+inline constexpr int kDifferenceRoundings = 1;
+inline constexpr int kDirectionRoundings = 5;
+inline constexpr int kInterpolationRoundings = 3;
+inline constexpr int kRadianceRoundings = 3;
+inline constexpr int kTermRoundings = 2;
+inline constexpr int kPowerRoundings = 16;
+inline constexpr int kCombineRoundings = 2;
+
+// `value` widened by k float roundings relative to its own magnitude.
+Interval after_roundings(Interval value, int k);
+Interval3 after_roundings(const Interval3& value, int k);
+
+// BYTES. raster writes a linear value v as floor(clamp(v, 0, 1) 255 + 0.5), evaluated in float (the product and
+// the sum round: gamma_2 relative to 255.5); the oracle maps an interval [lo, hi], widened by that, through the same
+// formula in double. The result is the range of bytes a correct raster may write. No further level is allowed: a
+// writer that truncates instead of rounding is off by one level, and that must show.
+inline constexpr int kByteRoundings = 2;
+struct ByteRange {
+    int lo = 0, hi = 0;
+    bool contains(int byte) const { return lo <= byte && byte <= hi; }
+};
+ByteRange byte_range(Interval linear);
+// The byte of an exact value (the oracle's own image): the same formula in double.
+int exact_byte(double linear);
+
+}  // namespace raster::oracle
