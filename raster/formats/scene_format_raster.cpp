@@ -8,15 +8,15 @@
 
 namespace raster {
 
-glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader) {
-    reader.expect_sequence(list, "transform");
+glm::mat4 read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
+                               const DocumentReader& reader) {
     glm::mat4 model(1.0f);
-    for (const YAML::Node& step : list) {
-        if (!step.IsMap() || step.size() != 1)
+    for (const Node& step : steps) {
+        if (!step.is_map() || step.size() != 1)
             reader.fail(step, "each transform step is a map with one key: translate, rotate, quaternion, scale or lookat");
         reader.check_keys(step, {"translate", "rotate", "quaternion", "scale", "lookat"});
-        const std::string kind = step.begin()->first.Scalar();
-        const YAML::Node value = step.begin()->second;
+        const std::string kind = step.entries().front().key.text();
+        const Node& value = step.entries().front().value;
         glm::mat4 matrix(1.0f);
         if (kind == "translate") {
             matrix = translate_matrix(reader.vec3(value, "translate"));
@@ -26,12 +26,12 @@ glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader)
             // {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]
             float angle;
             glm::vec3 axis;
-            if (value.IsMap()) {
+            if (value.is_map()) {
                 reader.check_keys(value, {"angle", "axis"});
                 angle = reader.finite_float(reader.required(value, "angle"), "rotate angle");
                 axis = reader.vec3(reader.required(value, "axis"), "rotate axis");
             } else {
-                if (!value.IsSequence() || value.size() != 4)
+                if (!value.is_sequence() || value.size() != 4)
                     reader.fail(value, "rotate is {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]");
                 angle = reader.finite_float(value[0], "rotate angle");
                 axis = {reader.finite_float(value[1], "rotate axis"), reader.finite_float(value[2], "rotate axis"),
@@ -40,7 +40,7 @@ glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader)
             if (!(glm::length(axis) > 0.0f)) reader.fail(value, "rotate axis must not be zero");
             matrix = rotate_matrix(angle, axis);
         } else if (kind == "quaternion") {
-            if (!value.IsSequence() || value.size() != 4) reader.fail(value, "quaternion is [w, x, y, z]");
+            if (!value.is_sequence() || value.size() != 4) reader.fail(value, "quaternion is [w, x, y, z]");
             const float w = reader.finite_float(value[0], "quaternion"), x = reader.finite_float(value[1], "quaternion"),
                         y = reader.finite_float(value[2], "quaternion"), z = reader.finite_float(value[3], "quaternion");
             if (!(w * w + x * x + y * y + z * z > 0.0f)) reader.fail(value, "quaternion must not be zero");
@@ -51,7 +51,7 @@ glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader)
             Camera frame;
             frame.eye = reader.vec3(reader.required(value, "eye"), "lookat eye");
             frame.target = reader.vec3(reader.required(value, "target"), "lookat target");
-            if (YAML::Node up = reader.optional(value, "up"); up.IsDefined()) frame.up = reader.vec3(up, "lookat up");
+            if (const Node& up = reader.optional(value, "up"); up.is_defined()) frame.up = reader.vec3(up, "lookat up");
             if (const auto problem = camera_problem(frame))
                 reader.fail(value, "lookat: " + problem->message.substr(problem->message.find(' ') + 1));
             matrix = look_at_model_matrix(frame.eye, frame.target, frame.up);
@@ -61,9 +61,14 @@ glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader)
     return model;
 }
 
-YAML::Node camera_node_to_blame(const CameraNodes& nodes, CameraField field) {
-    auto first_defined = [&](const YAML::Node& value, const YAML::Node& relative_to) {
-        return value.IsDefined() ? value : relative_to.IsDefined() ? relative_to : nodes.map;
+glm::mat4 read_transform_chain(const Node& list, const DocumentReader& reader) {
+    reader.expect_sequence(list, "transform");
+    return read_transform_steps(list.items(), reader);
+}
+
+const Node& camera_node_to_blame(const CameraNodes& nodes, CameraField field) {
+    auto first_defined = [&](const Node& value, const Node& relative_to) -> const Node& {
+        return value.is_defined() ? value : relative_to.is_defined() ? relative_to : nodes.map;
     };
     switch (field) {
         case CameraField::eye: return first_defined(nodes.eye, nodes.map);
@@ -78,64 +83,64 @@ YAML::Node camera_node_to_blame(const CameraNodes& nodes, CameraField field) {
 
 namespace {
 
-glm::vec3 read_color(const YAML::Node& node, const YamlReader& reader, const char* what) {
+glm::vec3 read_color(const Node& node, const DocumentReader& reader, const char* what) {
     return reader.vec3(node, what, true);
 }
 
-void read_image(const YAML::Node& node, const YamlReader& reader, RenderSettings& settings) {
+void read_image(const Node& node, const DocumentReader& reader, RenderSettings& settings) {
     reader.expect_map(node, "image");
     reader.check_keys(node, {"width", "height", "background"});
-    if (YAML::Node v = reader.optional(node, "width"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "width"); v.is_defined())
         settings.width = reader.integer(v, "image width", 1, kMaxImageDimension);
-    if (YAML::Node v = reader.optional(node, "height"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "height"); v.is_defined())
         settings.height = reader.integer(v, "image height", 1, kMaxImageDimension);
-    if (YAML::Node v = reader.optional(node, "background"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "background"); v.is_defined())
         settings.background = read_color(v, reader, "background");
 }
 
-void read_camera(const YAML::Node& node, const YamlReader& reader, Camera& camera) {
+void read_camera(const Node& node, const DocumentReader& reader, Camera& camera) {
     reader.expect_map(node, "camera");
     reader.check_keys(node, {"eye", "target", "up", "fov", "near", "far"});
-    const YAML::Node eye = reader.optional(node, "eye"), target = reader.optional(node, "target"),
-                     up = reader.optional(node, "up"), fov = reader.optional(node, "fov"),
-                     near = reader.optional(node, "near"), far = reader.optional(node, "far");
-    if (eye.IsDefined()) camera.eye = reader.vec3(eye, "camera eye");
-    if (target.IsDefined()) camera.target = reader.vec3(target, "camera target");
-    if (up.IsDefined()) camera.up = reader.vec3(up, "camera up");
-    if (fov.IsDefined()) camera.fov_y_degrees = reader.finite_float(fov, "camera fov");
-    if (near.IsDefined()) camera.near = reader.finite_float(near, "camera near");
-    if (far.IsDefined()) camera.far = reader.finite_float(far, "camera far");
+    const Node &eye = reader.optional(node, "eye"), &target = reader.optional(node, "target"),
+               &up = reader.optional(node, "up"), &fov = reader.optional(node, "fov"),
+               &near = reader.optional(node, "near"), &far = reader.optional(node, "far");
+    if (eye.is_defined()) camera.eye = reader.vec3(eye, "camera eye");
+    if (target.is_defined()) camera.target = reader.vec3(target, "camera target");
+    if (up.is_defined()) camera.up = reader.vec3(up, "camera up");
+    if (fov.is_defined()) camera.fov_y_degrees = reader.finite_float(fov, "camera fov");
+    if (near.is_defined()) camera.near = reader.finite_float(near, "camera near");
+    if (far.is_defined()) camera.far = reader.finite_float(far, "camera far");
     if (const auto problem = camera_problem(camera))
         reader.fail(camera_node_to_blame({node, eye, target, up, fov, near, far}, problem->field), problem->message);
 }
 
-void read_render(const YAML::Node& node, const YamlReader& reader, RenderSettings& settings) {
+void read_render(const Node& node, const DocumentReader& reader, RenderSettings& settings) {
     reader.expect_map(node, "render");
     reader.check_keys(node, {"samples", "pattern", "msaa", "shading", "cull", "snap_bits", "ambient", "edges",
                              "interpolation", "depth", "clipping", "hierarchical_z"});
-    if (YAML::Node v = reader.optional(node, "samples"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "samples"); v.is_defined())
         settings.samples = reader.integer(v, "samples", 1, 256);
-    if (YAML::Node v = reader.optional(node, "pattern"); v.IsDefined()) {
+    if (const Node& v = reader.optional(node, "pattern"); v.is_defined()) {
         if (!parse_sample_pattern(reader.string(v, "pattern"), settings.pattern))
             reader.fail(v, "pattern must be 'standard' or 'grid'");
     }
-    if (YAML::Node v = reader.optional(node, "msaa"); v.IsDefined()) settings.msaa = reader.boolean(v, "msaa");
-    if (YAML::Node v = reader.optional(node, "shading"); v.IsDefined()) {
+    if (const Node& v = reader.optional(node, "msaa"); v.is_defined()) settings.msaa = reader.boolean(v, "msaa");
+    if (const Node& v = reader.optional(node, "shading"); v.is_defined()) {
         if (!parse_shading_mode(reader.string(v, "shading"), settings.shading))
             reader.fail(v, "shading must be unlit, flat, gouraud, phong or blinn-phong");
     }
-    if (YAML::Node v = reader.optional(node, "cull"); v.IsDefined()) {
+    if (const Node& v = reader.optional(node, "cull"); v.is_defined()) {
         const std::string cull = reader.string(v, "cull");
         if (cull != "none" && cull != "back") reader.fail(v, "cull must be 'none' or 'back'");
         settings.cull_backfaces = cull == "back";
     }
-    if (YAML::Node v = reader.optional(node, "snap_bits"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "snap_bits"); v.is_defined())
         settings.snap_bits = reader.integer(v, "snap_bits", kMinSnapBits, kMaxSnapBits);
-    if (YAML::Node v = reader.optional(node, "ambient"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "ambient"); v.is_defined())
         settings.ambient_light = read_color(v, reader, "render ambient");
     // A precision mode: an optional key naming one of the values its parse function knows.
     auto read_mode = [&](const char* key, auto parse, auto names, auto& out) {
-        if (YAML::Node v = reader.optional(node, key); v.IsDefined()) {
+        if (const Node& v = reader.optional(node, key); v.is_defined()) {
             if (!parse(reader.string(v, key), out)) reader.fail(v, std::string(key) + " must be one of " + names());
         }
     };
@@ -144,45 +149,45 @@ void read_render(const YAML::Node& node, const YamlReader& reader, RenderSetting
     read_mode("interpolation", parse_interpolation, interpolation_names, modes.interpolation);
     read_mode("depth", parse_depth_format, depth_format_names, modes.depth);
     read_mode("clipping", parse_clipping, clipping_names, modes.clipping);
-    if (YAML::Node v = reader.optional(node, "hierarchical_z"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "hierarchical_z"); v.is_defined())
         modes.hierarchical_z = reader.boolean(v, "hierarchical_z");
 }
 
 // The image size, sample count and frame memory together, once both sections are read, at the value to change.
-void check_settings(const YAML::Node& root, const YamlReader& reader, const RenderSettings& settings) {
+void check_settings(const Node& root, const DocumentReader& reader, const RenderSettings& settings) {
     const std::string problem = settings_problem(settings);
     if (problem.empty()) return;
-    const YAML::Node image = reader.optional(root, "image"), render = reader.optional(root, "render");
-    const YAML::Node samples = render.IsDefined() ? reader.optional(render, "samples") : render;
-    const YAML::Node pattern = render.IsDefined() ? reader.optional(render, "pattern") : render;
+    const Node &image = reader.optional(root, "image"), &render = reader.optional(root, "render");
+    const Node& samples = render.is_defined() ? reader.optional(render, "samples") : render;
+    const Node& pattern = render.is_defined() ? reader.optional(render, "pattern") : render;
     if (!sample_count_error(settings.samples, settings.pattern).empty())
-        reader.fail(samples.IsDefined() ? samples : pattern.IsDefined() ? pattern : root, problem);
-    if (samples.IsDefined() && settings.samples > 1) reader.fail(samples, problem);  // the multiplier of the frame
-    reader.fail(image.IsDefined() ? image : root, problem);
+        reader.fail(samples.is_defined() ? samples : pattern.is_defined() ? pattern : root, problem);
+    if (samples.is_defined() && settings.samples > 1) reader.fail(samples, problem);  // the multiplier of the frame
+    reader.fail(image.is_defined() ? image : root, problem);
 }
 
-Light read_light(const YAML::Node& node, const YamlReader& reader) {
+Light read_light(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "a light");
     reader.check_keys(node, {"position", "color", "intensity", "attenuation"});
     Light light;
     light.position = reader.vec3(reader.required(node, "position"), "light position");
-    if (YAML::Node v = reader.optional(node, "color"); v.IsDefined()) light.color = read_color(v, reader, "light color");
-    if (YAML::Node v = reader.optional(node, "intensity"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "color"); v.is_defined()) light.color = read_color(v, reader, "light color");
+    if (const Node& v = reader.optional(node, "intensity"); v.is_defined())
         light.intensity = reader.finite_float(v, "light intensity");
-    if (YAML::Node v = reader.optional(node, "attenuation"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "attenuation"); v.is_defined())
         light.attenuate = reader.boolean(v, "light attenuation");
     return light;
 }
 
-Material read_material(const YAML::Node& node, const YamlReader& reader) {
+Material read_material(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "material");
     reader.check_keys(node, {"color", "ambient", "diffuse", "specular", "exponent"});
     Material material;
-    if (YAML::Node v = reader.optional(node, "color"); v.IsDefined()) material.color = read_color(v, reader, "material color");
-    if (YAML::Node v = reader.optional(node, "ambient"); v.IsDefined()) material.ambient = read_color(v, reader, "ambient");
-    if (YAML::Node v = reader.optional(node, "diffuse"); v.IsDefined()) material.diffuse = read_color(v, reader, "diffuse");
-    if (YAML::Node v = reader.optional(node, "specular"); v.IsDefined()) material.specular = read_color(v, reader, "specular");
-    if (YAML::Node v = reader.optional(node, "exponent"); v.IsDefined()) {
+    if (const Node& v = reader.optional(node, "color"); v.is_defined()) material.color = read_color(v, reader, "material color");
+    if (const Node& v = reader.optional(node, "ambient"); v.is_defined()) material.ambient = read_color(v, reader, "ambient");
+    if (const Node& v = reader.optional(node, "diffuse"); v.is_defined()) material.diffuse = read_color(v, reader, "diffuse");
+    if (const Node& v = reader.optional(node, "specular"); v.is_defined()) material.specular = read_color(v, reader, "specular");
+    if (const Node& v = reader.optional(node, "exponent"); v.is_defined()) {
         material.exponent = reader.finite_float(v, "exponent");
         if (material.exponent < 0.0f) reader.fail(v, "exponent must be >= 0");
     }
@@ -191,20 +196,20 @@ Material read_material(const YAML::Node& node, const YamlReader& reader) {
 
 // Inline geometry: vertices, faces (triangles or polygons, fan-triangulated) and optional per-vertex normals,
 // vertex colours or face colours.
-MeshData read_inline_mesh(const YAML::Node& node, const YamlReader& reader) {
+MeshData read_inline_mesh(const Node& node, const DocumentReader& reader) {
     MeshData mesh;
-    const YAML::Node vertices = reader.required(node, "vertices");
+    const Node& vertices = reader.required(node, "vertices");
     reader.expect_sequence(vertices, "vertices");
     if (vertices.size() > kMaxMeshVertices) reader.fail(vertices, "too many vertices");
-    for (const YAML::Node& v : vertices) mesh.positions.push_back(reader.vec3(v, "a vertex"));
-    const YAML::Node faces = reader.required(node, "faces");
+    for (const Node& v : vertices.items()) mesh.positions.push_back(reader.vec3(v, "a vertex"));
+    const Node& faces = reader.required(node, "faces");
     reader.expect_sequence(faces, "faces");
     std::vector<size_t> face_first_triangle;
-    for (const YAML::Node& face : faces) {
-        if (!face.IsSequence() || face.size() < 3 || face.size() > kMaxPolygonVertices)
+    for (const Node& face : faces.items()) {
+        if (!face.is_sequence() || face.size() < 3 || face.size() > kMaxPolygonVertices)
             reader.fail(face, "a face is a list of 3 or more vertex indices");
         std::vector<uint32_t> corners;
-        for (const YAML::Node& index : face)
+        for (const Node& index : face.items())
             corners.push_back(static_cast<uint32_t>(
                 reader.integer(index, "a face index", 0, static_cast<int>(mesh.positions.size()) - 1)));
         face_first_triangle.push_back(mesh.triangles.size());
@@ -213,17 +218,17 @@ MeshData read_inline_mesh(const YAML::Node& node, const YamlReader& reader) {
     }
     // Colours may be a single number for grey (README "Scene format"); normals may not.
     auto per_vertex = [&](const char* key, std::vector<glm::vec3>& out, bool grey_ok) {
-        const YAML::Node list = reader.optional(node, key);
-        if (!list.IsDefined()) return;
+        const Node& list = reader.optional(node, key);
+        if (!list.is_defined()) return;
         reader.expect_sequence(list, key);
         if (list.size() != mesh.positions.size())
             reader.fail(list, std::string(key) + " must have one entry per vertex (" +
                                   std::to_string(mesh.positions.size()) + "), has " + std::to_string(list.size()));
-        for (const YAML::Node& v : list) out.push_back(reader.vec3(v, key, grey_ok));
+        for (const Node& v : list.items()) out.push_back(reader.vec3(v, key, grey_ok));
     };
     per_vertex("normals", mesh.normals, false);
     per_vertex("vertex_colors", mesh.colors, true);
-    if (const YAML::Node list = reader.optional(node, "face_colors"); list.IsDefined()) {
+    if (const Node& list = reader.optional(node, "face_colors"); list.is_defined()) {
         reader.expect_sequence(list, "face_colors");
         if (list.size() != faces.size())
             reader.fail(list, "face_colors must have one entry per face (" + std::to_string(faces.size()) + "), has " +
@@ -239,41 +244,41 @@ MeshData read_inline_mesh(const YAML::Node& node, const YamlReader& reader) {
     return mesh;
 }
 
-SceneMesh read_mesh(const YAML::Node& node, const YamlReader& reader, const MeshFileLoader& load_mesh) {
+SceneMesh read_mesh(const Node& node, const DocumentReader& reader, const MeshFileLoader& load_mesh) {
     reader.expect_map(node, "a mesh");
     reader.check_keys(node, {"file", "vertices", "faces", "normals", "vertex_colors", "face_colors", "transform",
                              "material"});
     SceneMesh mesh;
-    const YAML::Node file = reader.optional(node, "file");
-    if (file.IsDefined() == reader.optional(node, "vertices").IsDefined())
+    const Node& file = reader.optional(node, "file");
+    if (file.is_defined() == reader.optional(node, "vertices").is_defined())
         reader.fail(node, "a mesh has either 'file' or inline 'vertices' and 'faces'");
-    if (file.IsDefined()) {
+    if (file.is_defined()) {
         mesh.source = reader.string(file, "file");
         mesh.data = load_mesh(file, mesh.source);
     } else {
-        mesh.source = reader.file() + ":" + std::to_string(node.Mark().line + 1) + " (inline mesh)";
+        mesh.source = reader.file() + ":" + std::to_string(node.line()) + " (inline mesh)";
         mesh.data = read_inline_mesh(node, reader);
     }
-    if (YAML::Node v = reader.optional(node, "transform"); v.IsDefined()) mesh.model = read_transform_chain(v, reader);
-    if (YAML::Node v = reader.optional(node, "material"); v.IsDefined()) mesh.material = read_material(v, reader);
+    if (const Node& v = reader.optional(node, "transform"); v.is_defined()) mesh.model = read_transform_chain(v, reader);
+    if (const Node& v = reader.optional(node, "material"); v.is_defined()) mesh.material = read_material(v, reader);
     return mesh;
 }
 
 }  // namespace
 
-void read_raster_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
+void read_raster_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
     reader.check_keys(root, {"image", "camera", "render", "lights", "meshes"});
-    if (YAML::Node v = reader.optional(root, "image"); v.IsDefined()) read_image(v, reader, scene.settings);
-    if (YAML::Node v = reader.optional(root, "render"); v.IsDefined()) read_render(v, reader, scene.settings);
+    if (const Node& v = reader.optional(root, "image"); v.is_defined()) read_image(v, reader, scene.settings);
+    if (const Node& v = reader.optional(root, "render"); v.is_defined()) read_render(v, reader, scene.settings);
     check_settings(root, reader, scene.settings);
-    if (YAML::Node v = reader.optional(root, "camera"); v.IsDefined()) read_camera(v, reader, scene.camera);
-    if (YAML::Node v = reader.optional(root, "lights"); v.IsDefined()) {
+    if (const Node& v = reader.optional(root, "camera"); v.is_defined()) read_camera(v, reader, scene.camera);
+    if (const Node& v = reader.optional(root, "lights"); v.is_defined()) {
         reader.expect_sequence(v, "lights");
-        for (const YAML::Node& light : v) scene.lights.push_back(read_light(light, reader));
+        for (const Node& light : v.items()) scene.lights.push_back(read_light(light, reader));
     }
-    const YAML::Node meshes = reader.required(root, "meshes");
+    const Node& meshes = reader.required(root, "meshes");
     reader.expect_sequence(meshes, "meshes");
-    for (const YAML::Node& mesh : meshes) scene.meshes.push_back(read_mesh(mesh, reader, load_mesh));
+    for (const Node& mesh : meshes.items()) scene.meshes.push_back(read_mesh(mesh, reader, load_mesh));
 }
 
 }  // namespace raster

@@ -54,26 +54,26 @@ std::string with_suffix(const std::string& name, const char* suffix, std::initia
 }
 
 // A colour or ambient term in the document's 0..255 scale.
-glm::vec3 color_255(const YAML::Node& node, const YamlReader& reader, const char* what) {
+glm::vec3 color_255(const Node& node, const DocumentReader& reader, const char* what) {
     const glm::vec3 color = reader.vec3(node, what, true);
     for (int i = 0; i < 3; ++i)
         if (color[i] < 0.0f || color[i] > 255.0f) reader.fail(node, std::string(what) + " components must be in 0..255");
     return color;
 }
 
-float non_negative(const YAML::Node& node, const YamlReader& reader, const char* what) {
+float non_negative(const Node& node, const DocumentReader& reader, const char* what) {
     const float value = reader.finite_float(node, what);
     if (value < 0.0f) reader.fail(node, std::string(what) + " must be >= 0");
     return value;
 }
 
-float positive(const YAML::Node& node, const YamlReader& reader, const char* what) {
+float positive(const Node& node, const DocumentReader& reader, const char* what) {
     const float value = reader.finite_float(node, what);
     if (!(value > 0.0f)) reader.fail(node, std::string(what) + " must be > 0");
     return value;
 }
 
-Seed000Task read_task(const YAML::Node& node, const YamlReader& reader) {
+Seed000Task read_task(const Node& node, const DocumentReader& reader) {
     const std::string name = reader.string(node, "task");
     for (Seed000Task task : kTasks)
         if (name == to_string(task)) return task;
@@ -82,17 +82,17 @@ Seed000Task read_task(const YAML::Node& node, const YamlReader& reader) {
 
 // `antialias` (none | SSAA) and `samples`. Only the triangle and transform tasks anti-alias; the shading tasks
 // discard both, as the document says.
-int read_samples(const YAML::Node& root, const YamlReader& reader, Seed000Task task) {
-    const YAML::Node antialias = reader.optional(root, "antialias"), samples = reader.optional(root, "samples");
+int read_samples(const Node& root, const DocumentReader& reader, Seed000Task task) {
+    const Node &antialias = reader.optional(root, "antialias"), &samples = reader.optional(root, "samples");
     bool ssaa = false;
-    if (antialias.IsDefined()) {
+    if (antialias.is_defined()) {
         const std::string mode = lowercase(reader.string(antialias, "antialias"));
         if (mode != "none" && mode != "ssaa") reader.fail(antialias, "antialias must be 'none' or 'SSAA'");
         ssaa = mode == "ssaa";
     }
-    const int count = samples.IsDefined() ? reader.integer(samples, "samples", 1, kMaxGridSide * kMaxGridSide) : 1;
+    const int count = samples.is_defined() ? reader.integer(samples, "samples", 1, kMaxGridSide * kMaxGridSide) : 1;
     if (is_shading_task(task) || !ssaa) return 1;
-    if (!samples.IsDefined()) reader.fail(antialias, "antialias: SSAA needs 'samples' (a positive integer)");
+    if (!samples.is_defined()) reader.fail(antialias, "antialias: SSAA needs 'samples' (a positive integer)");
     const int side = static_cast<int>(std::lround(std::sqrt(count)));
     if (side * side != count && count != 2 && count != 8)
         reader.fail(samples, "samples must be a square (an N x N grid: 1, 4, 9, 16, ...) or 2 or 8, got " +
@@ -100,19 +100,19 @@ int read_samples(const YAML::Node& root, const YamlReader& reader, Seed000Task t
     return count;
 }
 
-Seed000Camera read_camera(const YAML::Node& node, const YamlReader& reader) {
+Seed000Camera read_camera(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "camera");
     reader.check_keys(node, {"pos", "lookAt", "up", "width", "height", "nearClip", "farClip"});
     Seed000Camera camera;
     camera.pos = reader.vec3(reader.required(node, "pos"), "camera pos");
-    const YAML::Node look_at = reader.required(node, "lookAt");
+    const Node& look_at = reader.required(node, "lookAt");
     camera.look_at = reader.vec3(look_at, "camera lookAt");
-    const YAML::Node up = reader.required(node, "up");
+    const Node& up = reader.required(node, "up");
     camera.up = reader.vec3(up, "camera up");
     camera.width = positive(reader.required(node, "width"), reader, "camera width");
     camera.height = positive(reader.required(node, "height"), reader, "camera height");
     camera.near_clip = positive(reader.required(node, "nearClip"), reader, "camera nearClip");
-    const YAML::Node far = reader.required(node, "farClip");
+    const Node& far = reader.required(node, "farClip");
     camera.far_clip = reader.finite_float(far, "camera farClip");
     if (!(camera.far_clip > camera.near_clip)) reader.fail(far, "camera farClip must be greater than nearClip");
     const glm::vec3 gaze = camera.look_at - camera.pos;
@@ -122,22 +122,22 @@ Seed000Camera read_camera(const YAML::Node& node, const YamlReader& reader) {
     return camera;
 }
 
-Seed000Transform read_transform(const YAML::Node& node, const YamlReader& reader) {
+Seed000Transform read_transform(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "a transform");
     reader.check_keys(node, {"rotation", "translation", "scale"});
     Seed000Transform transform;
-    if (const YAML::Node rotation = reader.optional(node, "rotation"); rotation.IsDefined()) {
-        if (!rotation.IsSequence() || rotation.size() != 4) reader.fail(rotation, "rotation is a quaternion [w, x, y, z]");
+    if (const Node& rotation = reader.optional(node, "rotation"); rotation.is_defined()) {
+        if (!rotation.is_sequence() || rotation.size() != 4) reader.fail(rotation, "rotation is a quaternion [w, x, y, z]");
         for (int i = 0; i < 4; ++i) transform.rotation_wxyz[i] = reader.finite_float(rotation[i], "rotation");
         if (!(glm::length(transform.rotation_wxyz) > 0.0f)) reader.fail(rotation, "rotation must not be zero");
     }
-    if (const YAML::Node v = reader.optional(node, "translation"); v.IsDefined())
+    if (const Node& v = reader.optional(node, "translation"); v.is_defined())
         transform.translation = reader.vec3(v, "translation");
-    if (const YAML::Node v = reader.optional(node, "scale"); v.IsDefined()) transform.scale = reader.vec3(v, "scale", true);
+    if (const Node& v = reader.optional(node, "scale"); v.is_defined()) transform.scale = reader.vec3(v, "scale", true);
     return transform;
 }
 
-Seed000Light read_light(const YAML::Node& node, const YamlReader& reader) {
+Seed000Light read_light(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "a light");
     reader.check_keys(node, {"pos", "intensity", "color"});
     Seed000Light light;
@@ -149,43 +149,43 @@ Seed000Light read_light(const YAML::Node& node, const YamlReader& reader) {
 
 }  // namespace
 
-Seed000Config read_seed000_config(const YAML::Node& root, const YamlReader& reader) {
+Seed000Config read_seed000_config(const Node& root, const DocumentReader& reader) {
     reader.check_keys(root, {"task", "antialias", "samples", "resolution", "obj", "output", "camera", "transforms",
                              "input", "expected", "exponent", "ambient", "lights"});
     Seed000Config config;
     config.task = read_task(reader.required(root, "task"), reader);
     const std::filesystem::path folder = std::filesystem::path(reader.file()).parent_path();
 
-    const YAML::Node resolution = reader.required(root, "resolution");
+    const Node& resolution = reader.required(root, "resolution");
     reader.expect_map(resolution, "resolution");
     reader.check_keys(resolution, {"width", "height"});
     config.width = reader.integer(reader.required(resolution, "width"), "resolution width", 1, kMaxImageDimension);
     config.height = reader.integer(reader.required(resolution, "height"), "resolution height", 1, kMaxImageDimension);
     config.samples = read_samples(root, reader, config.task);
 
-    const YAML::Node obj = config.task == Seed000Task::transform_test ? reader.optional(root, "obj")
-                                                                       : reader.required(root, "obj");
-    if (obj.IsDefined()) config.obj = with_suffix(reader.string(obj, "obj"), ".obj", {".obj"});
+    const Node& obj = config.task == Seed000Task::transform_test ? reader.optional(root, "obj")
+                                                                  : reader.required(root, "obj");
+    if (obj.is_defined()) config.obj = with_suffix(reader.string(obj, "obj"), ".obj", {".obj"});
     std::string output = "output";
-    if (const YAML::Node v = reader.optional(root, "output"); v.IsDefined()) output = reader.string(v, "output");
+    if (const Node& v = reader.optional(root, "output"); v.is_defined()) output = reader.string(v, "output");
     config.output = folder / with_suffix(output, ".png", {".png", ".ppm"});
 
     if (config.task != Seed000Task::triangle) config.camera = read_camera(reader.required(root, "camera"), reader);
-    if (const YAML::Node list = reader.optional(root, "transforms"); list.IsDefined()) {
+    if (const Node& list = reader.optional(root, "transforms"); list.is_defined()) {
         reader.expect_sequence(list, "transforms");
-        for (const YAML::Node& entry : list) config.transforms.push_back(read_transform(entry, reader));
+        for (const Node& entry : list.items()) config.transforms.push_back(read_transform(entry, reader));
     }
     if (config.task == Seed000Task::shading) {
         config.exponent = non_negative(reader.required(root, "exponent"), reader, "exponent");
         config.ambient_255 = color_255(reader.required(root, "ambient"), reader, "ambient");
-        const YAML::Node lights = reader.required(root, "lights");
+        const Node& lights = reader.required(root, "lights");
         reader.expect_sequence(lights, "lights");
-        for (const YAML::Node& light : lights) config.lights.push_back(read_light(light, reader));
+        for (const Node& light : lights.items()) config.lights.push_back(read_light(light, reader));
     }
     if (config.task == Seed000Task::transform_test) {
         config.input = glm::dvec3(reader.vec3(reader.required(root, "input"), "input"));
-        const YAML::Node expected = reader.required(root, "expected");
-        if (!expected.IsSequence() || expected.size() != 4) reader.fail(expected, "expected is [x, y, z, w]");
+        const Node& expected = reader.required(root, "expected");
+        if (!expected.is_sequence() || expected.size() != 4) reader.fail(expected, "expected is [x, y, z, w]");
         for (int i = 0; i < 4; ++i) config.expected[i] = reader.number(expected[i], "expected");
     }
     return config;
@@ -193,9 +193,10 @@ Seed000Config read_seed000_config(const YAML::Node& root, const YamlReader& read
 
 Seed000Config load_seed000_config(const std::filesystem::path& path) {
     const std::string name = path.string();
-    const YAML::Node root = parse_document(read_file_bytes(path, kMaxSceneFileBytes), name);
-    const YamlReader reader(name);
-    if (!root.IsMap()) throw InputError(name, 1, 1, "a seed 000 config is a map of keys to values");
+    const Document document = parse_document(read_file_bytes(path, kMaxSceneFileBytes), name);
+    const Node& root = document.root();
+    const DocumentReader reader(name);
+    if (!root.is_map()) throw InputError(name, 1, 1, "a seed 000 config is a map of keys to values");
     return read_seed000_config(root, reader);
 }
 
@@ -328,7 +329,7 @@ void set_canvas_transform(int width, int height, Scene& scene, glm::mat4& model)
 
 }  // namespace
 
-void read_seed000_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
+void read_seed000_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
     const Seed000Config config = read_seed000_config(root, reader);
     RenderSettings& settings = scene.settings;
     settings.width = config.width;
@@ -354,7 +355,7 @@ void read_seed000_scene(const YAML::Node& root, const YamlReader& reader, const 
     }
     if (config.task == Seed000Task::transform_test || config.obj.empty()) return;  // nothing to draw
 
-    const YAML::Node obj_node = reader.required(root, "obj");
+    const Node& obj_node = reader.required(root, "obj");
     const MeshData& mesh = load_mesh(obj_node, config.obj.string());
     Material material;  // the document's objects are white: colour 1, lit only by `ambient` and the lights
     material.color = glm::vec3(1.0f);

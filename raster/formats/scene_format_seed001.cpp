@@ -63,25 +63,23 @@ Scene seed001_triangle_scene(const Seed001Triangle& triangle) {
 
 namespace {
 
-void warn_unknown_keys(const YAML::Node& map, const YamlReader& reader, std::initializer_list<const char*> known,
+void warn_unknown_keys(const Node& map, const DocumentReader& reader, std::initializer_list<const char*> known,
                        const char* where) {
     if (std::string unknown = reader.unknown_keys(map, known); !unknown.empty())
-        std::fprintf(stderr, "%s:%d: warning: ignoring %s keys %s\n", reader.file().c_str(), map.Mark().line + 1, where,
+        std::fprintf(stderr, "%s:%d: warning: ignoring %s keys %s\n", reader.file().c_str(), map.line(), where,
                      unknown.c_str());
 }
 
 // A transform list as balboa's parse_transformation reads it, applied in the order listed (M = T_n ... T_1).
 // `lookat` takes {position, target, up} and places its object at `position` looking at `target` (eq. (28));
 // rotate, scale and translate are raster's own transform steps.
-glm::mat4 read_seed001_transform(const YAML::Node& list, const YamlReader& reader) {
+glm::mat4 read_seed001_transform(const Node& list, const DocumentReader& reader) {
     reader.expect_sequence(list, "transform");
     glm::mat4 matrix(1.0f);
-    for (const YAML::Node& step : list) {
-        const YAML::Node lookat = step.IsMap() && step.size() == 1 ? reader.optional(step, "lookat") : YAML::Node();
-        if (!lookat.IsDefined()) {
-            YAML::Node single(YAML::NodeType::Sequence);
-            single.push_back(step);
-            matrix = read_transform_chain(single, reader) * matrix;
+    for (const Node& step : list.items()) {
+        const Node& lookat = step.is_map() && step.size() == 1 ? reader.optional(step, "lookat") : Node::undefined();
+        if (!lookat.is_defined()) {
+            matrix = read_transform_steps({step}, reader) * matrix;
             continue;
         }
         reader.expect_map(lookat, "lookat");
@@ -89,7 +87,7 @@ glm::mat4 read_seed001_transform(const YAML::Node& list, const YamlReader& reade
         Camera frame;
         frame.eye = reader.vec3(reader.required(lookat, "position"), "lookat position");
         frame.target = reader.vec3(reader.required(lookat, "target"), "lookat target");
-        if (const YAML::Node up = reader.optional(lookat, "up"); up.IsDefined()) frame.up = reader.vec3(up, "lookat up");
+        if (const Node& up = reader.optional(lookat, "up"); up.is_defined()) frame.up = reader.vec3(up, "lookat up");
         if (const auto camera = camera_problem(frame)) {
             // camera_problem speaks of a camera's eye; balboa calls it the position.
             std::string problem = camera->message.substr(camera->message.find(' ') + 1);
@@ -104,14 +102,14 @@ glm::mat4 read_seed001_transform(const YAML::Node& list, const YamlReader& reade
 // Numbers in threes, written flat ([x0, y0, z0, x1, ...] as the document prints them) or as [[x, y, z], ...].
 // `element` reads one number; the result holds one entry per triple.
 template <typename Triple, typename ReadElement>
-std::vector<Triple> read_triples(const YAML::Node& list, const YamlReader& reader, const char* what,
+std::vector<Triple> read_triples(const Node& list, const DocumentReader& reader, const char* what,
                                  ReadElement read_element) {
     reader.expect_sequence(list, what);
     std::vector<Triple> triples;
-    const bool nested = list.size() > 0 && list[0].IsSequence();
+    const bool nested = list.size() > 0 && list[0].is_sequence();
     if (nested) {
-        for (const YAML::Node& entry : list) {
-            if (!entry.IsSequence() || entry.size() != 3) reader.fail(entry, std::string(what) + " entries are [a, b, c]");
+        for (const Node& entry : list.items()) {
+            if (!entry.is_sequence() || entry.size() != 3) reader.fail(entry, std::string(what) + " entries are [a, b, c]");
             triples.push_back(Triple{read_element(entry[0]), read_element(entry[1]), read_element(entry[2])});
         }
         return triples;
@@ -123,27 +121,27 @@ std::vector<Triple> read_triples(const YAML::Node& list, const YamlReader& reade
     return triples;
 }
 
-std::vector<glm::vec3> read_vectors(const YAML::Node& list, const YamlReader& reader, const char* what) {
+std::vector<glm::vec3> read_vectors(const Node& list, const DocumentReader& reader, const char* what) {
     if (list.size() > 3 * kMaxMeshVertices) reader.fail(list, std::string("too many ") + what);
-    return read_triples<glm::vec3>(list, reader, what, [&](const YAML::Node& n) { return reader.finite_float(n, what); });
+    return read_triples<glm::vec3>(list, reader, what, [&](const Node& n) { return reader.finite_float(n, what); });
 }
 
-MeshData read_inline_object(const YAML::Node& node, const YamlReader& reader) {
+MeshData read_inline_object(const Node& node, const DocumentReader& reader) {
     MeshData mesh;
     mesh.positions = read_vectors(reader.required(node, "vertices"), reader, "vertices");
     const int last = static_cast<int>(mesh.positions.size()) - 1;
-    const YAML::Node faces = reader.required(node, "faces");
+    const Node& faces = reader.required(node, "faces");
     if (faces.size() > 3 * kMaxMeshTriangles) reader.fail(faces, "too many faces");
-    mesh.triangles = read_triples<TriangleIndices>(faces, reader, "faces", [&](const YAML::Node& n) {
+    mesh.triangles = read_triples<TriangleIndices>(faces, reader, "faces", [&](const Node& n) {
         return static_cast<uint32_t>(reader.integer(n, "a face index", 0, last));
     });
-    if (const YAML::Node colors = reader.optional(node, "vertex_colors"); colors.IsDefined()) {
+    if (const Node& colors = reader.optional(node, "vertex_colors"); colors.is_defined()) {
         mesh.colors = read_vectors(colors, reader, "vertex_colors");
         if (mesh.colors.size() != mesh.positions.size())
             reader.fail(colors, "vertex_colors must have one colour per vertex (" + std::to_string(mesh.positions.size()) +
                                     "), has " + std::to_string(mesh.colors.size()));
     }
-    if (const YAML::Node colors = reader.optional(node, "face_colors"); colors.IsDefined()) {
+    if (const Node& colors = reader.optional(node, "face_colors"); colors.is_defined()) {
         mesh.face_colors = read_vectors(colors, reader, "face_colors");
         if (mesh.face_colors.size() != mesh.triangles.size())
             reader.fail(colors, "face_colors must have one colour per face (" + std::to_string(mesh.triangles.size()) +
@@ -156,27 +154,27 @@ MeshData read_inline_object(const YAML::Node& node, const YamlReader& reader) {
 
 }  // namespace
 
-void read_seed001_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
+void read_seed001_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
     warn_unknown_keys(root, reader, {"camera", "background", "objects"}, "top-level");
-    const YAML::Node camera = reader.required(root, "camera");
+    const Node& camera = reader.required(root, "camera");
     reader.expect_map(camera, "camera");
     warn_unknown_keys(camera, reader, {"resolution", "transform", "s", "z_near"}, "camera");
 
     RenderSettings& settings = scene.settings;
     settings.width = kSeed001DefaultWidth;
     settings.height = kSeed001DefaultHeight;
-    if (const YAML::Node resolution = reader.optional(camera, "resolution"); resolution.IsDefined()) {
-        if (!resolution.IsSequence() || resolution.size() != 2) reader.fail(resolution, "resolution is [width, height]");
+    if (const Node& resolution = reader.optional(camera, "resolution"); resolution.is_defined()) {
+        if (!resolution.is_sequence() || resolution.size() != 2) reader.fail(resolution, "resolution is [width, height]");
         settings.width = reader.integer(resolution[0], "resolution width", 1, kMaxImageDimension);
         settings.height = reader.integer(resolution[1], "resolution height", 1, kMaxImageDimension);
     }
     float s = kSeed001DefaultS, z_near = kSeed001DefaultZNear;
-    const YAML::Node s_node = reader.optional(camera, "s"), z_near_node = reader.optional(camera, "z_near");
-    if (s_node.IsDefined()) s = reader.finite_float(s_node, "camera s");
-    if (z_near_node.IsDefined()) z_near = reader.finite_float(z_near_node, "camera z_near");
+    const Node &s_node = reader.optional(camera, "s"), &z_near_node = reader.optional(camera, "z_near");
+    if (s_node.is_defined()) s = reader.finite_float(s_node, "camera s");
+    if (z_near_node.is_defined()) z_near = reader.finite_float(z_near_node, "camera z_near");
     if (std::string problem = seed001_camera_problem(s, z_near); !problem.empty())
-        reader.fail(problem.rfind("s ", 0) == 0 ? (s_node.IsDefined() ? s_node : camera)
-                                                : (z_near_node.IsDefined() ? z_near_node : camera),
+        reader.fail(problem.rfind("s ", 0) == 0 ? (s_node.is_defined() ? s_node : camera)
+                                                : (z_near_node.is_defined() ? z_near_node : camera),
                     problem);
     set_seed001_camera(s, z_near, scene);
     if (std::string problem = settings_problem(settings); !problem.empty()) reader.fail(camera, problem);
@@ -184,7 +182,7 @@ void read_seed001_scene(const YAML::Node& root, const YamlReader& reader, const 
     // The camera's transform is camera-to-world; the view matrix, its inverse, is folded into every model matrix
     // (unlit shading needs no world space), so raster's camera stays at the origin.
     glm::mat4 camera_to_world(1.0f);
-    if (const YAML::Node transform = reader.optional(camera, "transform"); transform.IsDefined()) {
+    if (const Node& transform = reader.optional(camera, "transform"); transform.is_defined()) {
         camera_to_world = read_seed001_transform(transform, reader);
         if (!(std::fabs(glm::determinant(camera_to_world)) > 1e-12f))
             reader.fail(transform, "the camera transform is not invertible");
@@ -192,28 +190,28 @@ void read_seed001_scene(const YAML::Node& root, const YamlReader& reader, const 
     const glm::mat4 view = glm::inverse(camera_to_world);
 
     settings.background = glm::vec3(kSeed001Background);
-    if (const YAML::Node background = reader.optional(root, "background"); background.IsDefined())
+    if (const Node& background = reader.optional(root, "background"); background.is_defined())
         settings.background = reader.vec3(background, "background", true);
 
-    const YAML::Node objects = reader.required(root, "objects");
+    const Node& objects = reader.required(root, "objects");
     reader.expect_sequence(objects, "objects");
-    for (const YAML::Node& node : objects) {
+    for (const Node& node : objects.items()) {
         reader.expect_map(node, "an object");
         warn_unknown_keys(node, reader, {"filename", "vertices", "faces", "vertex_colors", "face_colors", "transform"},
                           "object");
         SceneMesh mesh;
-        const YAML::Node filename = reader.optional(node, "filename");
-        if (filename.IsDefined() == reader.optional(node, "vertices").IsDefined())
+        const Node& filename = reader.optional(node, "filename");
+        if (filename.is_defined() == reader.optional(node, "vertices").is_defined())
             reader.fail(node, "an object has either 'filename' (a PLY or OBJ file) or inline 'vertices' and 'faces'");
-        if (filename.IsDefined()) {
+        if (filename.is_defined()) {
             mesh.source = reader.string(filename, "filename");
             mesh.data = load_mesh(filename, mesh.source);
         } else {
-            mesh.source = reader.file() + ":" + std::to_string(node.Mark().line + 1) + " (inline object)";
+            mesh.source = reader.file() + ":" + std::to_string(node.line()) + " (inline object)";
             mesh.data = read_inline_object(node, reader);
         }
         glm::mat4 model(1.0f);
-        if (const YAML::Node transform = reader.optional(node, "transform"); transform.IsDefined())
+        if (const Node& transform = reader.optional(node, "transform"); transform.is_defined())
             model = read_seed001_transform(transform, reader);
         mesh.model = view * model;
         scene.meshes.push_back(std::move(mesh));

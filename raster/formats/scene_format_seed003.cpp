@@ -7,7 +7,7 @@
 
 namespace raster {
 
-void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
+void read_seed003_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
     const auto known = {"eye", "lookat", "up", "fov_angle", "width", "height", "near", "far", "lights", "meshes"};
     if (std::string unknown = reader.unknown_keys(root, known); !unknown.empty())
         std::fprintf(stderr, "%s: warning: ignoring keys %s\n", reader.file().c_str(), unknown.c_str());
@@ -18,13 +18,13 @@ void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const 
     settings.shading = ShadingMode::blinn_phong;  // the document's Phong shading: per-fragment Blinn-Phong
 
     Camera& camera = scene.camera;
-    const YAML::Node eye = reader.required(root, "eye"), lookat = reader.required(root, "lookat"),
-                     up = reader.required(root, "up"), fov = reader.required(root, "fov_angle");
+    const Node &eye = reader.required(root, "eye"), &lookat = reader.required(root, "lookat"),
+               &up = reader.required(root, "up"), &fov = reader.required(root, "fov_angle");
     camera.eye = reader.vec3(eye, "eye");
     camera.target = reader.vec3(lookat, "lookat");
     camera.up = reader.vec3(up, "up");
     camera.fov_y_degrees = reader.finite_float(fov, "fov_angle");
-    const YAML::Node near = reader.required(root, "near"), far = reader.required(root, "far");
+    const Node &near = reader.required(root, "near"), &far = reader.required(root, "far");
     camera.near = reader.finite_float(near, "near");
     camera.far = reader.finite_float(far, "far");
     // The document follows the textbook: near and far are z coordinates, both negative, with near > far.
@@ -38,9 +38,9 @@ void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const 
     if (const auto problem = camera_problem(camera))
         reader.fail(camera_node_to_blame({root, eye, lookat, up, fov, near, far}, problem->field), problem->message);
 
-    if (const YAML::Node lights = reader.optional(root, "lights"); lights.IsDefined()) {
+    if (const Node& lights = reader.optional(root, "lights"); lights.is_defined()) {
         reader.expect_sequence(lights, "lights");
-        for (const YAML::Node& node : lights) {
+        for (const Node& node : lights.items()) {
             reader.expect_map(node, "a light");
             Light light;
             light.position = reader.vec3(reader.required(node, "position"), "light position");
@@ -48,12 +48,12 @@ void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const 
             scene.lights.push_back(light);
         }
     }
-    const YAML::Node meshes = reader.required(root, "meshes");
+    const Node& meshes = reader.required(root, "meshes");
     reader.expect_sequence(meshes, "meshes");
-    for (const YAML::Node& node : meshes) {
+    for (const Node& node : meshes.items()) {
         reader.expect_map(node, "a mesh");
         SceneMesh mesh;
-        const YAML::Node obj = reader.required(node, "obj");
+        const Node& obj = reader.required(node, "obj");
         mesh.source = reader.string(obj, "obj");
         mesh.data = load_mesh(obj, mesh.source);
         mesh.data.normals.clear();  // the document: vertex normals are the average of the adjacent face normals

@@ -3,39 +3,41 @@
 
 #include <filesystem>
 #include <functional>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include "raster/scene/scene.h"
 #include "raster/scene/validation.h"
 #include "raster/formats/scene_format_seed000.h"
-#include "raster/formats/yaml_reader.h"
+#include "raster/formats/document_reader.h"
 
 namespace raster {
 
 // Resolves a mesh path from a scene relative to the scene file's folder and loads it (each file once per scene).
-using MeshFileLoader = std::function<const MeshData&(const YAML::Node& where, const std::string& path)>;
+using MeshFileLoader = std::function<const MeshData&(const Node& where, const std::string& path)>;
 
-void read_raster_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
-void read_seed003_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+void read_raster_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+void read_seed003_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
 // Seed 000 configs: the scene the config's task draws (see scene_format_seed000.h); read_seed000_config reads the
 // rest (task, output, transform-test values).
-void read_seed000_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
-Seed000Config read_seed000_config(const YAML::Node& root, const YamlReader& reader);
+void read_seed000_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+Seed000Config read_seed000_config(const Node& root, const DocumentReader& reader);
 // Seed 001 (balboa) JSON scenes: camera with resolution / transform / s / z_near, background, objects.
-void read_seed001_scene(const YAML::Node& root, const YamlReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+void read_seed001_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
 
 // A camera's nodes in a document (undefined where the file leaves the value to its default), and the node to blame
 // for a camera problem: the value's own node, else the node it is relative to (target and up: the eye; far: near),
 // else the camera's map.
 struct CameraNodes {
-    YAML::Node map, eye, target, up, fov, near, far;
+    const Node &map, &eye, &target, &up, &fov, &near, &far;
 };
-YAML::Node camera_node_to_blame(const CameraNodes& nodes, CameraField field);
+const Node& camera_node_to_blame(const CameraNodes& nodes, CameraField field);
 
 // A transform chain: a list of single-key maps (translate, rotate, quaternion, scale, lookat), applied to the
-// object in the order listed, so the matrix is M = T_n * ... * T_1.
-glm::mat4 read_transform_chain(const YAML::Node& list, const YamlReader& reader);
+// object in the order listed, so the matrix is M = T_n * ... * T_1; and the same for steps gathered otherwise.
+glm::mat4 read_transform_chain(const Node& list, const DocumentReader& reader);
+glm::mat4 read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
+                               const DocumentReader& reader);
 
 }  // namespace raster

@@ -11,7 +11,7 @@
 #include "raster/formats/mesh_ply.h"
 #include "raster/scene/validation.h"
 #include "raster/formats/scene_formats.h"
-#include "raster/formats/yaml_reader.h"
+#include "raster/formats/document_reader.h"
 
 namespace raster {
 
@@ -27,8 +27,8 @@ const char* to_string(SceneFormat format) {
 
 namespace {
 
-SceneFormat detect_format(const YAML::Node& root, const YamlReader& reader) {
-    auto has = [&](const char* key) { return reader.optional(root, key).IsDefined(); };
+SceneFormat detect_format(const Node& root, const DocumentReader& reader) {
+    auto has = [&](const char* key) { return reader.optional(root, key).is_defined(); };
     if (has("task")) return SceneFormat::seed000;
     if (has("camera") && has("objects")) return SceneFormat::seed001;
     if (has("fov_angle") || has("lookat")) return SceneFormat::seed003;
@@ -47,13 +47,14 @@ MeshData load_mesh_file(const std::filesystem::path& path) {
 
 Scene parse_scene(std::string_view text, const std::filesystem::path& path, SceneFormat* format) {
     const std::string name = path.string();
-    const YAML::Node root = parse_document(text, name);
-    const YamlReader reader(name);
-    if (!root.IsDefined() || root.IsNull()) throw InputError(name, 1, 1, "the scene file is empty");
+    const Document document = parse_document(text, name);
+    const Node& root = document.root();
+    const DocumentReader reader(name);
+    if (!root.is_defined() || root.is_null()) throw InputError(name, 1, 1, "the scene file is empty");
     reader.expect_map(root, "a scene");
 
     std::map<std::string, std::unique_ptr<MeshData>> meshes;
-    const MeshFileLoader load_mesh = [&](const YAML::Node& where, const std::string& file) -> const MeshData& {
+    const MeshFileLoader load_mesh = [&](const Node& where, const std::string& file) -> const MeshData& {
         std::filesystem::path mesh_path(file);
         if (mesh_path.is_relative()) mesh_path = path.parent_path() / mesh_path;
         auto& slot = meshes[mesh_path.lexically_normal().string()];
