@@ -145,7 +145,44 @@ private:
     std::vector<const Node*> anchors_;
 };
 
+// yaml-cpp's scanner reads a flow collection to its end before it emits the collection's first event (it must know
+// whether the collection is a key), keeping a token of some 200 bytes for every bracket on the way: a file of a
+// million nested `[` takes gigabytes before the event handler's count could refuse it. So flow nesting is counted
+// first, in one pass over the text that skips quoted strings and comments and counts every other bracket (one in a
+// plain scalar too, which only makes it stricter), and refused at its 65th level, at that bracket.
+void refuse_deep_flow_nesting(std::string_view text, const std::string& file) {
+    int depth = 0, line = 1;
+    size_t line_start = 0;
+    char quote = 0;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\n') {
+            ++line;
+            line_start = i + 1;
+        }
+        if (quote) {
+            if (c == '\\' && quote == '"' && i + 1 < text.size() && text[i + 1] != '\n') ++i;
+            else if (c == quote) quote = 0;
+            continue;
+        }
+        // A quote opens a quoted scalar only where a token can start (an apostrophe inside a plain word does not).
+        const bool token_start = i == 0 || std::string_view(" \t\r\n[{,:-?").find(text[i - 1]) != std::string_view::npos;
+        if ((c == '"' || c == '\'') && token_start) {
+            quote = c;
+        } else if (c == '#' && (i == 0 || text[i - 1] == ' ' || text[i - 1] == '\t' || text[i - 1] == '\n')) {
+            while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxDocumentNesting)
+                throw InputError(file, line, static_cast<int>(i - line_start) + 1,
+                                 "nesting deeper than " + std::to_string(kMaxDocumentNesting) + " levels");
+        } else if (c == ']' || c == '}') {
+            depth = std::max(0, depth - 1);
+        }
+    }
+}
+
 Document parse_yaml(std::string_view text, const std::string& file) {
+    refuse_deep_flow_nesting(text, file);
     DocumentBuilder builder(file);
     YamlEvents events(builder);
     std::istringstream stream{std::string(text)};

@@ -194,6 +194,10 @@ TEST(Document, the65thOpeningIsRefused) {
     // Deep input is refused when its 65th level opens, without reading (or recursing into) the rest.
     expect_nesting_refused_at(flow(100000), 1, 65);
     expect_nesting_refused_at(block_sequences(100000), 1, 129);
+    // So is deep flow nesting inside a YAML document, which yaml-cpp's scanner would read to its end (a token for
+    // every bracket) before any event: a million of them, refused at the 65th, behind a word with an apostrophe
+    // (which does not open a quoted scalar) and after a quoted string holding brackets (which do not count).
+    expect_nesting_refused_at("name: it's \"[[[[\"\nmeshes: " + flow(1000000), 2, 8 + 65);
 }
 
 TEST(Document, flowAndBlockNestingAreCountedApart) {
