@@ -34,7 +34,7 @@ PixelBounds pixel_bounds(const ColourInputs& in) {
                 box[s] = {id, Interval3(glm::dvec3(oracle.bary[at]))};
                 if (id == kNoTriangle || is_genuine(verdict) || is_ambiguous(verdict)) continue;
                 const glm::dvec2 screen = glm::dvec2(px, py) + in.offsets[static_cast<size_t>(s)];
-                const glm::dvec3 tolerance = agreement_tolerance(*in.reference, id, screen).bary;
+                const glm::dvec3 tolerance = barycentric_tolerance(*in.reference, id, screen);
                 for (int k = 0; k < 3; ++k) box[s].bary[k] = box[s].bary[k].widened(tolerance[k]);
             }
             out.state[pixel] = genuine ? PixelState::genuine : ambiguous ? PixelState::ambiguous : PixelState::judged;

@@ -52,17 +52,25 @@ uint64_t ComparisonCounts::genuine_total() const {
     return count(SampleClass::visibility) + count(SampleClass::barycentrics) + count(SampleClass::depth);
 }
 
+glm::dvec3 barycentric_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
+    const ReferencePolygon& polygon = reference.polygon(id);
+    const SquareRange range = reference.range_around(id, screen, polygon.radius);
+    const double bary_rounding = barycentric_rounding(polygon.relative_depth_error);
+    if (!range.bounded || !std::isfinite(bary_rounding)) return glm::dvec3(kInfinity);
+    // Both renderers round: twice the per-renderer rounding; and Embree's own evaluation error.
+    return (range.max_bary - range.min_bary) + glm::dvec3(2.0 * bary_rounding) +
+           reference.embree_barycentric_error(id, screen);
+}
+
 AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
     const ReferencePolygon& polygon = reference.polygon(id);
     const SquareRange range = reference.range_around(id, screen, polygon.radius);
-    AgreementTolerance tolerance;
-    const double bary_rounding = barycentric_rounding(polygon.relative_depth_error);
     const double depth_rounding = view_depth_rounding(polygon.relative_depth_error);
-    if (!range.bounded || !std::isfinite(bary_rounding) || !std::isfinite(depth_rounding))
+    const glm::dvec3 bary = barycentric_tolerance(reference, id, screen);
+    if (!range.bounded || !std::isfinite(depth_rounding) || !std::isfinite(bary.x))
         return {glm::dvec3(kInfinity), kInfinity};
-    // Both renderers round: twice the per-renderer rounding; and Embree's own evaluation error.
-    tolerance.bary = (range.max_bary - range.min_bary) + glm::dvec3(2.0 * bary_rounding) +
-                     reference.embree_barycentric_error(id, screen);
+    AgreementTolerance tolerance;
+    tolerance.bary = bary;
     tolerance.view_depth = (range.max_view_depth - range.min_view_depth) + 2.0 * depth_rounding * range.max_view_depth +
                            reference.embree_view_depth_error(id, screen);
     return tolerance;

@@ -51,6 +51,8 @@ struct AgreementTolerance {
     double view_depth = 0;
 };
 AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);
+// Its barycentric part alone (what the colour check needs).
+glm::dvec3 barycentric_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);
 
 // The three allowances for a disagreement, one triangle (or a pair) at a time.
 bool in_edge_band(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);

@@ -50,10 +50,22 @@ inline Interval square(Interval a) {
     return {0.0, std::max(a.lo * a.lo, a.hi * a.hi)};
 }
 inline Interval sqrt(Interval a) { return {std::sqrt(std::max(0.0, a.lo)), std::sqrt(std::max(0.0, a.hi))}; }
-// x^e for x >= 0 (the negative part of `a` is taken as 0) and e > 0: increasing in x.
+// x^e for x >= 0 and e > 0: by repeated squaring for whole exponents up to 256 (at most 16 products: a few
+// double roundings), std::pow otherwise.
+inline double power_of(double x, double e) {
+    if (e <= 256.0 && e == std::floor(e)) {
+        unsigned n = static_cast<unsigned>(e);
+        double result = 1.0, square = x;
+        for (; n; n >>= 1, square *= square)
+            if (n & 1u) result *= square;
+        return result;
+    }
+    return std::pow(x, e);
+}
+// x^e over the interval, the negative part of `a` taken as 0: increasing in x.
 inline Interval power(Interval a, double e) {
     const Interval x = positive_part(a);
-    return {std::pow(x.lo, e), std::pow(x.hi, e)};
+    return {power_of(x.lo, e), power_of(x.hi, e)};
 }
 
 struct Interval3 {
