@@ -167,9 +167,9 @@ RASTER_PROPERTY(Extremes, nonFiniteCoordinatesAreRejectedCleanly) {
 
 // A scene scaled by 2^k (k up to 120: extents near 2e37; down to -100) renders bit for bit the same ids and
 // barycentrics, with view depths scaled by exactly 2^k: every float operation on the way scales exactly while
-// nothing overflows or goes subnormal (the generator's ranges are chosen for that, see generators.cpp). And a
-// triangle at +-3e38, whose clip coordinates overflow to Inf and NaN, changes nothing else and leaves every
-// value in the visibility buffer finite.
+// nothing overflows or goes subnormal (the generator's ranges are chosen for that, see
+// generators/scene_extremes.cpp). And a triangle at +-3e38, whose clip coordinates overflow to Inf and NaN,
+// changes nothing else and leaves every value in the visibility buffer finite.
 RASTER_PROPERTY(Extremes, sceneExtentsNearFloatLimitsRenderExactlyScaled) {
     const ScaledSceneCase c = *scenes_scaled_towards_float_limits();
     RC_CLASSIFY(true, c.kind);
