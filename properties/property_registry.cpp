@@ -13,8 +13,8 @@ namespace {
 // the registry is sorted by this list (and within a suite by where each property is written) to stay the same
 // from build to build. A new suite is added here.
 const char* const kSuiteOrder[] = {
-    "Watertight", "Coverage",   "FillRule", "Barycentrics", "Depth", "ViewMatrix", "Projection",
-    "Matrices",   "ModelMatrix", "NormalMatrix", "Clip",     "Sampling", "Extremes", "Lighting",
+    "Watertight", "Coverage", "FillRule", "Barycentrics", "Depth", "ViewMatrix", "Projection", "Matrices",
+    "ModelMatrix", "NormalMatrix", "Clip", "Sampling", "Extremes", "Lighting",
 };
 
 // A function's static, so that it exists before the first RASTER_PROPERTY of any source registers into it.

@@ -31,8 +31,9 @@ const std::vector<Property>& all_properties();
 // Defines the property Suite.Name and registers it: the braces that follow are its check, run against `impl`.
 // Write it in namespace raster::properties, in a source of the raster_property_checks object library (an object
 // library, so that the linker keeps every registration; properties/CMakeLists.txt).
-#define RASTER_PROPERTY(Suite, Name)                                                                             \
-    static void raster_property_##Suite##_##Name(const ::raster::properties::Implementation& impl);             \
-    [[maybe_unused]] static const bool raster_property_registered_##Suite##_##Name =                            \
-        ::raster::properties::register_property(#Suite, #Name, raster_property_##Suite##_##Name, __FILE__, __LINE__); \
+#define RASTER_PROPERTY(Suite, Name)                                                                       \
+    static void raster_property_##Suite##_##Name(const ::raster::properties::Implementation& impl);        \
+    [[maybe_unused]] static const bool raster_property_registered_##Suite##_##Name =                       \
+        ::raster::properties::register_property(#Suite, #Name, raster_property_##Suite##_##Name, __FILE__, \
+                                                __LINE__);                                                 \
     static void raster_property_##Suite##_##Name(const ::raster::properties::Implementation& impl)
