@@ -24,7 +24,7 @@ glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain);
 
 // Each block is a plain function pointer; a mutant replaces one. The vertex stage of PipelineStages calls the
 // real look_at and perspective builders itself, so a mutant of one of those also replaces the vertex stage
-// with one that uses the faulty builder (see catalogue.cpp).
+// with one that uses the faulty builder (vertex_faults.h has both; catalogue.cpp plugs them in together).
 struct BuildingBlocks {
     glm::mat4 (*look_at)(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) = look_at_matrix;
     glm::mat4 (*look_at_inverse)(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) =

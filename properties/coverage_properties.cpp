@@ -1,20 +1,25 @@
-// Coverage properties: the tiling check on pairs through samples, fans around samples and single triangles.
-#include "properties/coverage_properties.h"
-
+// Coverage properties: samples placed exactly on shared edges and shared vertices are covered exactly once, and a
+// triangle's covered samples equal an independent exact-integer computation on its snapped vertices (the tiling
+// check, tiling_check.h, on pairs through samples, fans around samples and single triangles).
 #include "properties/generators.h"
+#include "properties/property_registry.h"
 #include "properties/tiling_check.h"
 
 namespace raster::properties {
 
-void check_shared_edge_samples_are_covered_exactly_once(const Implementation& impl) {
+// Two triangles sharing an edge built to run through samples (horizontal, vertical, diagonal, any slope).
+RASTER_PROPERTY(Coverage, sharedEdgeSamplesCoveredExactlyOnce) {
     check_tiling(impl, *pairs_sharing_an_edge_through_samples());
 }
 
-void check_a_shared_vertex_on_a_sample_is_covered_exactly_once(const Implementation& impl) {
+// A fan of three to nine triangles around a vertex placed exactly on a sample.
+RASTER_PROPERTY(Coverage, sharedVertexOnASampleCoveredExactlyOnce) {
     check_tiling(impl, *fans_around_a_sample());
 }
 
-void check_covered_samples_equal_the_exact_integer_reference(const Implementation& impl) {
+// One triangle (random, axis-aligned, sliver, tiny, on pixel centres, off the snap grid), any sample pattern and
+// snap precision, in perspective or not: its samples are exactly the reference's.
+RASTER_PROPERTY(Coverage, coveredSamplesEqualTheExactIntegerReference) {
     check_tiling(impl, *single_triangles());
 }
 

@@ -1,7 +1,6 @@
-// Depth properties: the projection's depth row, the z-buffer against an exact nearest-surface reference, and
-// draw-order independence.
-#include "properties/depth_properties.h"
-
+// Depth properties: reversed-Z float depth (the one depth mode raster has; conventions.h) is strictly monotone in
+// view distance over [near, far] (the projection's depth row), the z-buffer keeps the nearest surface (against an
+// exact nearest-surface reference), and without ties the image does not depend on draw order.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,7 +11,9 @@
 #include "properties/depth_precision.h"
 #include "properties/failure.h"
 #include "properties/generators.h"
+#include "properties/lens_projection.h"
 #include "properties/printing.h"
+#include "properties/property_registry.h"
 #include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {
@@ -26,19 +27,10 @@ float stored_depth(const glm::mat4& projection, const glm::vec3& view) {
 
 }  // namespace
 
-std::vector<ClipTriangle> project(const Implementation& impl, const LayeredCase& c) {
-    const glm::mat4 projection = impl.blocks.perspective(90.0f, static_cast<float>(c.frame.width) / c.frame.height,
-                                                         c.frame.volume.near, c.frame.volume.far);
-    std::vector<ClipTriangle> out;
-    for (const ViewTriangle& t : c.triangles) {
-        ClipTriangle clip;
-        for (size_t i = 0; i < 3; ++i) clip.v[i] = projection * glm::vec4(t.v[i], 1.0f);
-        out.push_back(clip);
-    }
-    return out;
-}
-
-void check_depth_is_monotone_in_view_distance_over_near_to_far(const Implementation& impl) {
+// For near <= w1 < w2 <= far with w2 >= w1 (1 + 2^-19) (depth_precision.h), the depth setup stores, fl(z / w)
+// from the implementation's projection matrix, is strictly larger (nearer) at w1, at every lens from typical to
+// near = 1e-6, far = 1e9 and far = near (1 + 2^-10).
+RASTER_PROPERTY(Depth, isMonotoneInViewDistanceOverNearToFar) {
     const LensCase c = *lenses();
     RC_CLASSIFY(true, c.kind);
     const glm::mat4 projection = impl.blocks.perspective(c.fov_y_degrees, c.aspect, c.near, c.far);
@@ -53,7 +45,11 @@ void check_depth_is_monotone_in_view_distance_over_near_to_far(const Implementat
                   float_literal(farther) + " at " + float_literal(c.farther));
 }
 
-void check_the_z_buffer_keeps_the_nearest_surface(const Implementation& impl) {
+// Overlapping triangles (flat layers, tilted, intersecting) projected with the implementation's lens: every sample
+// shows the triangle nearest along its ray, found exactly on the snapped triangles (1/w is affine in screen
+// space); samples where the two nearest depths are within the derived error of the compared depth
+// (depth_precision.h) are ties and may show either.
+RASTER_PROPERTY(Depth, zBufferKeepsTheNearestSurface) {
     const LayeredCase c = *overlapping_triangles();
     RC_CLASSIFY(true, c.kind);
     const Frame& frame = c.frame;
@@ -119,7 +115,9 @@ void check_the_z_buffer_keeps_the_nearest_surface(const Implementation& impl) {
     RC_CLASSIFY(decided == 0, "no sample decided");
 }
 
-void check_the_image_does_not_depend_on_draw_order_without_ties(const Implementation& impl) {
+// Fronto-parallel triangles at distinct power-of-two depths (no two surfaces ever tie) drawn in two orders give the
+// same visibility buffer, bit for bit: the same triangle, barycentrics and depth at every sample.
+RASTER_PROPERTY(Depth, imageDoesNotDependOnDrawOrderWithoutTies) {
     const LayeredCase c = *fronto_parallel_layers();
     RC_CLASSIFY(true, c.kind);
     const std::vector<ClipTriangle> triangles = project(impl, c);

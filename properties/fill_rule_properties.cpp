@@ -1,12 +1,15 @@
-// Fill-rule properties: owners of on-edge samples, checked against the rule as a nudge, before and after
-// mirroring or turning the scene.
-#include "properties/fill_rule_properties.h"
-
+// Fill-rule properties: a sample on an edge shared by two triangles belongs to the one the top-left rule names, and
+// which one that is changes under mirrors and quarter turns of the scene exactly as the rule says. Owners of
+// on-edge samples are checked against the rule written as a nudge, before and after mirroring or turning the scene.
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "properties/failure.h"
 #include "properties/generators.h"
+#include "properties/property_registry.h"
+#include "properties/reference/coverage_reference.h"
 #include "properties/tiling_check.h"
 
 namespace raster::properties {
@@ -14,6 +17,19 @@ namespace {
 
 using reference::orient;
 using reference::Point;
+
+// The rule written as a nudge: a sample on an edge belongs to the triangle into which the sample moves when
+// nudged by (e, e^2) for an infinitesimal e > 0 (right, then down; y down). For a non-horizontal edge that is the
+// triangle to its right (the edge is that triangle's left edge); for a horizontal one the triangle below it (its
+// top edge). Given the nudge's two directions, returns the side of line a-b it points to: the sign of
+// orient(a, b, a + nudge), +1 or -1.
+int side_the_rule_picks(Point a, Point b, glm::ivec2 first, glm::ivec2 second) {
+    const __int128 dx = b.x - a.x, dy = b.y - a.y;
+    auto toward = [&](glm::ivec2 nudge) { return dx * nudge.y - dy * nudge.x; };  // orient(a, b, a + nudge)
+    __int128 s = toward(first);
+    if (s == 0) s = toward(second);
+    return s > 0 ? 1 : -1;
+}
 
 // A sample exactly on the shared edge, and which triangle (0 holds C, 1 holds D) covered it.
 struct EdgeSample {
@@ -48,21 +64,17 @@ std::vector<EdgeSample> owners_on_the_shared_edge(const Implementation& impl, co
 
 }  // namespace
 
-int side_the_rule_picks(Point a, Point b, glm::ivec2 first, glm::ivec2 second) {
-    const __int128 dx = b.x - a.x, dy = b.y - a.y;
-    auto toward = [&](glm::ivec2 nudge) { return dx * nudge.y - dy * nudge.x; };  // orient(a, b, a + nudge)
-    __int128 s = toward(first);
-    if (s == 0) s = toward(second);
-    return s > 0 ? 1 : -1;
-}
-
-void check_shared_edge_samples_belong_to_the_triangle_right_of_or_below_the_edge(const Implementation& impl) {
+// Pairs sharing an edge through samples: each sample on the open edge is covered once, by the triangle the rule
+// names.
+RASTER_PROPERTY(FillRule, sharedEdgeSamplesBelongToTheTriangleRightOfOrBelowTheEdge) {
     const TilingCase c = *pairs_sharing_an_edge_through_samples();
     RC_CLASSIFY(true, c.kind);
     owners_on_the_shared_edge(impl, c, {1, 0}, {0, 1});
 }
 
-void check_ownership_changes_under_mirrors_and_quarter_turns_as_the_rule_says(const Implementation& impl) {
+// The same pair after a mirror or a quarter turn of the (square, symmetric-pattern) frame: the owner of each moved
+// sample is the triangle the rule names in the moved scene, the original nudge carried back by the inverse map.
+RASTER_PROPERTY(FillRule, ownershipChangesUnderMirrorsAndQuarterTurnsAsTheRuleSays) {
     const TilingCase c = *symmetric_pairs_sharing_an_edge();
     const FrameSymmetry g = *rc::gen::elementOf(square_symmetries());
     RC_CLASSIFY(true, g.name);

@@ -1,6 +1,5 @@
-// The lighting property, through the implementation's lighting function.
-#include "properties/lighting_properties.h"
-
+// The lighting property: a light marked as attenuating falls off with the inverse square of its distance, checked
+// through the implementation's lighting function.
 #include <cmath>
 #include <string>
 
@@ -9,10 +8,15 @@
 #include "properties/failure.h"
 #include "properties/generators.h"
 #include "properties/printing.h"
+#include "properties/property_registry.h"
 
 namespace raster::properties {
 
-void check_an_attenuated_light_falls_off_with_the_inverse_square_of_distance(const Implementation& impl) {
+// Diffuse-only material, one light along a direction in front of the surface: the attenuated diffuse term over the
+// unattenuated one is 1 / |L - P|^2 (in double, from the float positions) within 2^-20 relative. Both terms share
+// every operation but the division by the float squared distance: the difference's rounding (2u), the dot product
+// (3u), the division (u) and the two products after it in each term (4u) add up to 10u < 2^-20, u = 2^-24.
+RASTER_PROPERTY(Lighting, attenuatedLightFallsOffWithTheInverseSquareOfDistance) {
     const LightCase c = *lights();
     RC_CLASSIFY(true, c.kind);
     const glm::vec3 point(0.25f, -0.5f, 0.125f);

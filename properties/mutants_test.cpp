@@ -27,7 +27,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
-#include "properties/property_list.h"
+#include "properties/property_registry.h"
 #include "mutants/catalogue.h"
 #ifdef RASTER_HAVE_ORACLE
 #include "properties/mutants_oracle_checks.h"

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
-#include "properties/clip_properties.h"
+#include "properties/clip_checks.h"
 #include "properties/generators.h"
 #include "properties/implementation.h"
 #include "properties/tiling_check.h"

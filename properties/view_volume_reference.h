@@ -46,7 +46,7 @@ struct ClippingScale {
 };
 ClippingScale clipping_scale(const ClipTriangle& triangle, const ClipVolume& volume);
 
-// The bound on each coordinate's error in a float clipper's output, derived in clip_properties.h: 2^-18 largest.
+// The bound on each coordinate's error in a float clipper's output, derived in clip_checks.h: 2^-18 largest.
 double clipped_coordinate_error(const ClippingScale& scale);
 
 }  // namespace raster::properties

@@ -1,20 +1,24 @@
-// Watertightness properties: each is the tiling check on one family of meshes.
-#include "properties/watertight_properties.h"
-
+// Watertightness properties: meshes split into triangles that share edges and vertices cover every sample of their
+// union exactly once and nothing outside, in every orientation and sub-pixel offset, from tiny to the fixed-point
+// limit. Each is the tiling check (tiling_check.h) on one family of meshes.
 #include "properties/generators.h"
+#include "properties/property_registry.h"
 #include "properties/tiling_check.h"
 
 namespace raster::properties {
 
-void check_convex_polygon_fans_cover_every_inside_sample_exactly_once(const Implementation& impl) {
+// Random convex polygons, fanned from a corner or from an inside point.
+RASTER_PROPERTY(Watertight, convexPolygonFansCoverEveryInsideSampleExactlyOnce) {
     check_tiling(impl, *convex_polygon_fans());
 }
 
-void check_jittered_grids_cover_every_sample_of_their_rectangle_exactly_once(const Implementation& impl) {
+// Grids of quads with jittered inner vertices, each quad split along a random diagonal.
+RASTER_PROPERTY(Watertight, jitteredGridsCoverEverySampleOfTheirRectangleExactlyOnce) {
     check_tiling(impl, *jittered_grids());
 }
 
-void check_triangle_strips_cover_every_sample_between_their_rails_exactly_once(const Implementation& impl) {
+// Strips of triangles between two rails.
+RASTER_PROPERTY(Watertight, triangleStripsCoverEverySampleBetweenTheirRailsExactlyOnce) {
     check_tiling(impl, *triangle_strips());
 }
 
