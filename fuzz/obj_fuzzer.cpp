@@ -1,4 +1,4 @@
-// Fuzz target: Wavefront OBJ text through raster::parse_obj (line checks, tinyobjloader, flattening, limits).
+// Fuzz target: Wavefront OBJ text through raster::parse_obj (the one-pass reader, triangulation, limits).
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

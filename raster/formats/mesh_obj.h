@@ -1,4 +1,4 @@
-// Wavefront OBJ meshes through tinyobjloader: objects, normals and vertex colours, polygons triangulated.
+// Wavefront OBJ meshes, read by raster's own reader: objects, normals and vertex colours, polygons triangulated.
 #pragma once
 
 #include <filesystem>
@@ -9,8 +9,9 @@
 
 namespace raster {
 
-// Parses OBJ text; `name` is used in error messages only. Every object (`o`/`g`) of the file is kept, in order,
-// in one MeshData with object_names / object_first_triangle marking where each starts. Normals are kept when
+// Parses OBJ text; `name` is used in error messages only. The objects of the file (`o`/`g`; which of them are kept
+// is tinyobjloader's rule, see mesh_obj_reader.cpp) are kept in order in one MeshData, object_names /
+// object_first_triangle marking where each starts. Normals are kept when
 // every face corner has one; vertex colours (`v x y z r g b`) when every vertex has one. Materials (mtllib) and
 // texture coordinates are not read: no stage uses them. Throws InputError on malformed input, indices out of
 // range, non-finite coordinates or sizes over the limits in mesh.h.
