@@ -39,6 +39,7 @@ table.report img { width: 240px; height: auto; image-rendering: pixelated; backg
 table.counts td { padding: 0 0.6em 0 0; font-size: 0.9em; }
 tr.genuine > th { color: #c00; }
 .legend span { padding: 0 0.4em; }
+.hover { font-size: 0.8em; min-height: 1.2em; max-width: 240px; color: #444; }
 img.pareto { max-width: 100%; height: auto; border: 1px solid #ccc; background: #fff; }
 table.tradeoff { border-collapse: collapse; margin-bottom: 1em; }
 table.tradeoff th, table.tradeoff td { padding: 0.15em 0.6em; text-align: right; border-bottom: 1px solid #e4e4e4; }
@@ -58,11 +59,33 @@ function markRenderedRows() {
   document.body.dataset.rowsRendered = String(rendered);
 }
 window.addEventListener('load', markRenderedRows);
+// Over a diff map, the colour disagreement under the pointer: raster's bytes, the range the oracle allows and the
+// oracle's own bytes, per channel.
+function showColourDisagreement(event) {
+  const image = event.target;
+  const x = Math.floor(event.offsetX * image.naturalWidth / image.clientWidth);
+  const y = Math.floor(event.offsetY * image.naturalHeight / image.clientHeight);
+  const list = JSON.parse(image.dataset.disagreements || '[]');
+  const found = list.filter(d => d.x === x && d.y === y);
+  const out = image.closest('tr').querySelector('.hover');
+  out.textContent = found.length === 0 ? '(' + x + ', ' + y + ')' : found.map(d =>
+    '(' + x + ', ' + y + ') ' + d.file + ': raster ' + d.raster.join(' ') + ', allowed ' +
+    d.allowed.map(r => r[0] + '-' + r[1]).join(' ') + ', oracle ' + d.oracle.join(' ')).join('; ');
+}
+for (const image of document.querySelectorAll('img.diff')) image.addEventListener('mousemove', showColourDisagreement);
 )";
 
-std::string image_cell(const std::string& file, const std::string& alt) {
+std::string image_cell(const std::string& file, const std::string& alt, const std::string& extra = "") {
     return "<td><a href=\"" + escape_html(file) + "\"><img src=\"" + escape_html(file) + "\" alt=\"" +
-           escape_html(alt) + "\"></a></td>";
+           escape_html(alt) + "\"" + extra + "></a></td>";
+}
+
+// A fraction of the samples, as a percentage with four decimals.
+std::string percent(const nlohmann::json& value) {
+    if (!value.is_number()) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4f%%", 100.0 * value.get<double>());
+    return text;
 }
 
 // object[key], or null when it is missing (a hand-edited or older tradeoff.json must not crash the page).
@@ -152,9 +175,10 @@ std::string report_html(const std::vector<ReportRow>& rows, const std::optional<
                        std::string(kStyle) + "</style>\n</head>\n<body data-rows-rendered=\"0\">\n";
     html += "<h1>raster against the Embree oracle</h1>\n";
     html += "<p>" + std::to_string(rows.size()) + " scenes, " + std::to_string(with_genuine) +
-            " with genuine disagreements. Diff maps: <span style=\"color:#e61414\">red</span> genuine, "
-            "<span style=\"color:#b89a00\">yellow</span> ambiguous (allowed by the precision model), grey agreeing."
-            "</p>\n";
+            " with genuine disagreements. Diff maps: <span style=\"color:#e61414\">red</span> a genuine sample, "
+            "<span style=\"color:#dc28dc\">magenta</span> a colour outside the oracle's range (hover for the "
+            "bytes), <span style=\"color:#b89a00\">yellow</span> ambiguous (allowed by the precision model), grey "
+            "agreeing.</p>\n";
     html += "<table class=\"report\">\n<thead><tr><th>scene</th><th>raster</th><th>oracle</th><th>diff</th>"
             "<th>samples</th></tr></thead>\n<tbody>\n";
     for (const ReportRow& row : rows) {
@@ -166,20 +190,32 @@ std::string report_html(const std::vector<ReportRow>& rows, const std::optional<
                 ", " + number(c["samples"]) + " spp</small></th>";
         html += image_cell(row.raster_image, row.name + ": raster");
         html += image_cell(row.oracle_image, row.name + ": oracle");
-        html += image_cell(row.diff_image, row.name + ": disagreement map");
+        const nlohmann::json disagreements = c.value("color_disagreements", nlohmann::json::array());
+        html += image_cell(row.diff_image, row.name + ": disagreement map",
+                           " class=\"diff\" data-disagreements=\"" + escape_html(disagreements.dump()) + "\"");
         html += "<td><table class=\"counts\">";
         html += "<tr><td>agree</td><td>" + number(c["agree"]) + "</td></tr>";
         html += "<tr><td>ambiguous</td><td>" + number(c["ambiguous_total"]) + "</td><td>edge band " +
                 number(c["ambiguous"]["edge_band"]) + ", depth tie " + number(c["ambiguous"]["depth_tie"]) +
                 ", clip boundary " + number(c["ambiguous"]["clip_boundary"]) + ", facing " +
                 number(c["ambiguous"].value("facing", 0)) + "</td></tr>";
+        const nlohmann::json fractions = c.value("ambiguous_fraction", nlohmann::json::object());
+        html += "<tr><td>excused</td><td>" + percent(fractions.value("total", nlohmann::json())) +
+                "</td><td>edge band " + percent(fractions.value("edge_band", nlohmann::json())) + ", depth tie " +
+                percent(fractions.value("depth_tie", nlohmann::json())) + ", clip boundary " +
+                percent(fractions.value("clip_boundary", nlohmann::json())) + ", facing " +
+                percent(fractions.value("facing", nlohmann::json())) + "</td></tr>";
         html += "<tr><td><b>genuine</b></td><td><b>" + number(c["genuine_total"]) + "</b></td><td>visibility " +
                 number(c["genuine"]["visibility"]) + ", barycentrics " + number(c["genuine"]["barycentrics"]) +
                 ", depth " + number(c["genuine"]["depth"]) + ", colour " + number(c["genuine"]["color"]) + "</td></tr>";
-        html += "<tr><td>max colour error</td><td>" + number(c["max_color_error"]) + "/255</td></tr>";
+        const nlohmann::json pixels = c.value("pixels", nlohmann::json::object());
+        html += "<tr><td>pixels</td><td>" + number(pixels.value("judged", nlohmann::json(0))) +
+                "</td><td>judged by colour; " + number(pixels.value("ambiguous", nlohmann::json(0))) +
+                " left to their samples' classes</td></tr>";
+        html += "<tr><td>max colour difference</td><td>" + number(c["max_color_error"]) + "/255</td></tr>";
         html += "<tr><td>time</td><td colspan=\"2\">raster " + number(c["raster_ms"]) + " ms, oracle " +
                 number(c["oracle_ms"]) + " ms (" + escape_html(c.value("oracle_mode", "")) + ")</td></tr>";
-        html += "</table></td></tr>\n";
+        html += "</table><div class=\"hover\"></div></td></tr>\n";
     }
     html += "</tbody>\n</table>\n";
     if (tradeoff) html += tradeoff_section(*tradeoff);
