@@ -27,10 +27,7 @@ struct SampleBuffer {
         bary.assign(n, glm::vec3(0.0f));
         view_depth.assign(n, 0.0f);
     }
-    size_t index(int x, int y, int s) const {
-        return (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) *
-                   static_cast<size_t>(samples) + static_cast<size_t>(s);
-    }
+    size_t index(int x, int y, int s) const { return sample_index(x, y, s, width, samples); }
     size_t size() const { return triangle.size(); }
 };
 

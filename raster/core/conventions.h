@@ -1,6 +1,7 @@
 // The conventions every module shares, written down once: spaces, image rows, fixed point, fill rule, depth.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace raster {
@@ -62,5 +63,12 @@ inline double guard_band_factor(int width, int height, int fixed_bits) {
 
 // A sample that no triangle covers has this triangle id.
 inline constexpr uint32_t kNoTriangle = 0xFFFFFFFFu;
+
+// Per-sample buffers (raster's visibility buffer, the oracle's) store samples pixel by pixel, row by row from the
+// top, `samples` consecutive entries per pixel: sample s of pixel (x, y) is at this index.
+inline constexpr size_t sample_index(int x, int y, int s, int width, int samples) {
+    return (static_cast<size_t>(y) * static_cast<size_t>(width) + static_cast<size_t>(x)) * static_cast<size_t>(samples) +
+           static_cast<size_t>(s);
+}
 
 }  // namespace raster
