@@ -7,6 +7,8 @@
 #include <iostream>
 #include <system_error>
 
+#include "tools/atomic_rename.h"
+
 namespace raster::tools {
 
 namespace {
@@ -56,15 +58,7 @@ bool write_atomically(const std::filesystem::path& path, const std::string& byte
             return false;
         }
     }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::cerr << "make_bench_meshes: cannot rename " << temporary.string() << " to " << path.string() << ": "
-                  << error.message() << "\n";
-        std::filesystem::remove(temporary, error);
-        return false;
-    }
-    return true;
+    return rename_over(temporary, path, "make_bench_meshes");
 }
 
 }  // namespace raster::tools
