@@ -1,0 +1,122 @@
+// The closing tables: median times per frame, raster/llvmpipe ratios, the targets, and raster against the oracle.
+#include "bench/summary_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+
+#include "bench/peer_benchmarks.h"
+#include "bench/raster_benchmark.h"
+
+namespace raster_bench {
+
+namespace {
+
+// The reported targets (not asserted): raster at most 1.0x llvmpipe's frame time on these, at 1 and 4 samples.
+constexpr const char* kTargetScenes[] = {"teapot", "icosphere"};
+
+std::string format_number(double value) {
+    if (std::isnan(value)) return "-";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", value);
+    return text;
+}
+
+bool llvmpipe_has(int samples) {
+    return std::find(std::begin(kLlvmpipeSamples), std::end(kLlvmpipeSamples), samples) != std::end(kLlvmpipeSamples);
+}
+
+// Median raster/llvmpipe ratio of one raster case on one clock; NaN when either did not run.
+double ratio(const SummaryReporter& reporter, const BenchScene& s, const RasterCase& c, SummaryReporter::Clock clock) {
+    const double mine = reporter.median_ms(raster_name(s, c), clock);
+    const double theirs = reporter.median_ms(llvmpipe_name(s, c.samples), clock);
+    return theirs > 0 ? mine / theirs : NAN;
+}
+
+}  // namespace
+
+void SummaryReporter::ReportRuns(const std::vector<Run>& runs) {
+    for (const Run& run : runs) {
+        if (run.error_occurred) continue;
+        const double to_ms = 1e3 / benchmark::GetTimeUnitMultiplier(run.time_unit);
+        const std::array<double, 2> ms{run.GetAdjustedRealTime() * to_ms, run.GetAdjustedCPUTime() * to_ms};
+        const std::string& name = run.run_name.function_name;
+        if (run.run_type == Run::RT_Aggregate && run.aggregate_name == "median") medians_[name] = ms;
+        else if (run.run_type == Run::RT_Iteration) runs_[name].push_back(ms);
+    }
+    ConsoleReporter::ReportRuns(runs);
+}
+
+double SummaryReporter::median_ms(const std::string& name, Clock clock) const {
+    if (auto it = medians_.find(name); it != medians_.end()) return it->second[clock];
+    auto it = runs_.find(name);
+    if (it == runs_.end() || it->second.empty()) return NAN;
+    std::vector<double> v;
+    for (const auto& ms : it->second) v.push_back(ms[clock]);
+    std::sort(v.begin(), v.end());
+    const size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void print_summary(const SummaryReporter& reporter, const std::vector<std::unique_ptr<BenchScene>>& scenes,
+                   const std::string& llvmpipe_absent) {
+    std::printf("\nMedians per frame, %d threads each%s\n", kThreads,
+                llvmpipe_absent.empty() ? "" : (" (llvmpipe: " + llvmpipe_absent + ")").c_str());
+    std::printf("%-10s %9s %8s %-8s %10s %12s %16s   %10s %12s %9s\n", "scene", "triangles", "size", "samples",
+                "raster ms", "llvmpipe ms", "raster/llvmpipe", "raster cpu", "llvmpipe cpu", "cpu ratio");
+    for (const auto& s : scenes) {
+        const std::string size = std::to_string(s->scene.settings.width) + "x" + std::to_string(s->scene.settings.height);
+        bool first_row = true;
+        for (const RasterCase& c : kRasterCases) {
+            const bool peer_has = llvmpipe_has(c.samples);
+            auto peer = [&](double v) { return peer_has ? format_number(v) : std::string("n/a (4x max)"); };
+            const std::string row = std::to_string(c.samples) + (c.msaa ? " msaa" : c.samples > 1 ? " ssaa" : "");
+            std::printf("%-10s %9s %8s %-8s %10s %12s %16s   %10s %12s %9s\n", first_row ? s->name.c_str() : "",
+                        first_row ? std::to_string(raster::triangle_count(s->scene)).c_str() : "",
+                        first_row ? size.c_str() : "", row.c_str(),
+                        format_number(reporter.median_ms(raster_name(*s, c), SummaryReporter::wall)).c_str(),
+                        peer(reporter.median_ms(llvmpipe_name(*s, c.samples), SummaryReporter::wall)).c_str(),
+                        format_number(ratio(reporter, *s, c, SummaryReporter::wall)).c_str(),
+                        format_number(reporter.median_ms(raster_name(*s, c), SummaryReporter::cpu)).c_str(),
+                        peer(reporter.median_ms(llvmpipe_name(*s, c.samples), SummaryReporter::cpu)).c_str(),
+                        format_number(ratio(reporter, *s, c, SummaryReporter::cpu)).c_str());
+            first_row = false;
+        }
+    }
+    std::printf("ms: wall time; cpu: CPU time of every thread of the process (less sensitive to other load).\n"
+                "ssaa rows shade every sample; msaa rows shade once per pixel per triangle, like llvmpipe's 4x\n"
+                "MSAA (resolved by glBlitFramebuffer in its time). Both llvmpipe ratios at 4 samples are against\n"
+                "its 4x MSAA.\n");
+
+    // The targets, reported and never asserted: raster/llvmpipe wall-time ratio at most 1.0.
+    const RasterCase target_cases[] = {{1, false}, {4, true}};
+    std::printf("\nTargets (raster at most 1.0x llvmpipe's frame time, wall medians):\n");
+    for (const auto& s : scenes) {
+        if (std::none_of(std::begin(kTargetScenes), std::end(kTargetScenes),
+                         [&](const char* name) { return s->name == name; }))
+            continue;
+        for (const RasterCase& c : target_cases) {
+            const double r = ratio(reporter, *s, c, SummaryReporter::wall);
+            std::printf("  %-10s %d sample%-6s %6s  %s\n", s->name.c_str(), c.samples,
+                        c.msaa ? "s msaa" : "", format_number(r).c_str(),
+                        std::isnan(r) ? "not measured" : r <= 1.0 ? "met" : "missed");
+        }
+    }
+
+    // Against the Embree oracle at 16 samples: how many times faster raster's frame is (target: at least 20x).
+    std::printf("\nAgainst the Embree oracle at %d samples (its visibility only; target: raster at least 20x faster):\n",
+                kOracleSamples);
+    std::printf("  %-10s %10s %14s %14s %12s %12s\n", "scene", "oracle ms", "raster ssaa ms", "raster msaa ms",
+                "ssaa speedup", "msaa speedup");
+    for (const auto& s : scenes) {
+        const double oracle = reporter.median_ms(oracle_name(*s), SummaryReporter::wall);
+        const double ssaa = reporter.median_ms(raster_name(*s, {kOracleSamples, false}), SummaryReporter::wall);
+        const double msaa = reporter.median_ms(raster_name(*s, {kOracleSamples, true}), SummaryReporter::wall);
+        std::printf("  %-10s %10s %14s %14s %11sx %11sx\n", s->name.c_str(), format_number(oracle).c_str(),
+                    format_number(ssaa).c_str(), format_number(msaa).c_str(), format_number(oracle / ssaa).c_str(),
+                    format_number(oracle / msaa).c_str());
+    }
+}
+
+}  // namespace raster_bench
