@@ -8,6 +8,7 @@
 
 #include "oracle/reference/precision.h"
 #include "raster/pipeline/camera_rays.h"
+#include "raster/pipeline/render.h"
 #include "raster/pipeline/vertex_stage.h"
 #include "raster/formats/scene_loader.h"
 #include "tests/support/oracle_test_scenes.h"
@@ -157,6 +158,39 @@ TEST(ReferenceGeometry, aSquareWhereTheRayGrazesThePlaneIsUnbounded) {
     const ReferenceGeometry reference = reference_for(scene);
     EXPECT_FALSE(reference.range_around(0, {50, 50}, 0.5).bounded);  // the horizon is the middle row
     EXPECT_TRUE(reference.range_around(0, {50, 90}, 0.5).bounded);
+}
+
+// A triangle with an edge through the viewport's corner: exact clipping leaves two vertices at the corner a few
+// 1e-15 px apart, an edge whose direction is rounding noise. Read as a polygon (no edge has the point on its outer
+// side), a sample 2.3 px inside the triangle came out as outside, which excused genuine disagreements there as an
+// edge band or a depth tie (the differential fuzzer's finding). contains() now decides from the exact ray hit.
+TEST(ReferenceGeometry, containsDecidesFromTheExactHitNotFromAClippedPolygonsRoundingNoise) {
+    const testing::Triangle triangle = {{{0x1.0958d4p+0f, 0x1.0958d4p+0f, -0x1.0958d4p+0f},
+                                         {0x1.4566p+0f, 0x1.831accp+2f, -0x1.d4744cp+1f},
+                                         {-0x1.27bb68p+1f, 0x1.e9f3p-3f, -0x1.684c38p+0f}}};
+    const Scene scene = scene_with_triangles({triangle}, camera_at_origin(90.0f, 0.1f, 100.0f), 32, 32);
+    const ReferenceGeometry reference = reference_for(scene);
+    const std::span<const glm::dvec2> polygon = reference.screen_vertices(0);
+    bool near_duplicate = false;
+    for (size_t i = 0; i < polygon.size(); ++i)
+        near_duplicate |= glm::length(polygon[(i + 1) % polygon.size()] - polygon[i]) < 1e-9;
+    ASSERT_TRUE(near_duplicate) << "the case needs an edge of rounding noise";
+    const glm::dvec2 sample(9.5, 2.5);
+    // The polygon reading: some edge puts the sample strictly outside, though it is 2.3 px from every edge.
+    bool positive = false, negative = false;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+        const glm::dvec2 edge = polygon[(i + 1) % polygon.size()] - polygon[i], to = sample - polygon[i];
+        const double side = edge.x * to.y - edge.y * to.x;
+        positive |= side > 0.0;
+        negative |= side < 0.0;
+    }
+    EXPECT_TRUE(positive && negative) << "the polygon reading no longer shows the flaw";
+    EXPECT_GT(reference.boundary_distance(0, sample), 2.0);
+    EXPECT_TRUE(reference.contains(0, sample));
+    // raster, with its exact integer coverage, covers the sample too.
+    RenderOptions options;
+    const RenderResult raster = render(scene, options);
+    EXPECT_EQ(raster.visibility.triangle[raster.visibility.index(9, 2, 0)], 0u);
 }
 
 }  // namespace
