@@ -1,6 +1,7 @@
 // A comparison run: raster, then the oracle, then the classifier and the colour check, each timed.
 #include "harness/comparison/scene_comparison.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "harness/comparison/decoded_image.h"
@@ -10,6 +11,7 @@
 #include "oracle/reference/scene_geometry.h"
 #include "oracle/reference/shader.h"
 #include "raster/core/stopwatch.h"
+#include "raster/scene/validation.h"
 
 namespace raster::harness {
 namespace {
@@ -25,6 +27,19 @@ Image image_of(const oracle::OracleImage& oracle) {
 }
 
 }  // namespace
+
+uint64_t comparison_bytes(const RenderSettings& settings) {
+    const uint64_t pixels = uint64_t(std::max(settings.width, 0)) * uint64_t(std::max(settings.height, 0));
+    return frame_bytes(settings) + pixels * uint64_t(std::max(settings.samples, 0)) * 21u + pixels * 50u;
+}
+
+std::string comparison_problem(const RenderSettings& settings) {
+    const uint64_t bytes = comparison_bytes(settings);
+    if (bytes <= kMaxFrameBytes) return "";
+    return "comparing a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " image with " +
+           std::to_string(settings.samples) + " samples needs " + std::to_string(bytes >> 20) + " MiB, over the " +
+           std::to_string(kMaxFrameBytes >> 20) + " MiB cap";
+}
 
 Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, const PipelineStages& stages) {
     Comparison out;

@@ -44,8 +44,16 @@ struct Comparison {
     uint64_t genuine_total() const { return visibility.counts.genuine_total() + colour_genuine_pixels; }
 };
 
+// Bytes a comparison of a frame with `settings` holds at once: raster's frame buffers (scene/validation.h's 28 per
+// sample), the oracle's sample buffer (20) and the classes (1) per sample; per pixel the images, the decoded files
+// and the colour bounds (about 50). compare_scene refuses frames above kMaxFrameBytes (comparison_problem).
+uint64_t comparison_bytes(const RenderSettings& settings);
+// Empty when a comparison of `settings` fits the cap, else what is wrong.
+std::string comparison_problem(const RenderSettings& settings);
+
 // Renders and compares. `stages` are raster's (a test passes a mutant's); the oracle has none of them. The scene
-// must be valid (scene/validation.h). Throws OracleError if Embree fails.
+// must be valid (scene/validation.h) and fit the comparison's memory cap (comparison_problem). Throws OracleError
+// if Embree fails.
 Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, const PipelineStages& stages = {});
 
 // {scene, width, height, samples, oracle_mode, agree, ambiguous: {edge_band, depth_tie, clip_boundary, facing},

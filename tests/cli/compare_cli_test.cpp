@@ -59,6 +59,19 @@ TEST(CompareCli, badInputExitsTwoAndWritesNothing) {
     fs::remove_all(dir);
 }
 
+TEST(CompareCli, aFrameRenderCanDrawButTooLargeToCompareIsRefusedBeforeAnyWork) {
+    // 2500 x 2500 at 16 samples: render's frame buffers fit its 4 GiB cap (2.8 GB), the comparison's do not.
+    const fs::path dir = fresh_dir("large");
+    const fs::path scene = dir / "large.yaml";
+    std::ofstream(scene) << "image: {width: 2500, height: 2500}\nrender: {samples: 16}\n"
+                            "meshes:\n  - {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1, 2]]}\n";
+    const CliRun r = run_raster({"compare", scene.string(), "--json", (dir / "out.json").string()});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_NE(r.err.find("MiB, over the 4096 MiB cap"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "out.json"));
+    fs::remove_all(dir);
+}
+
 TEST(CompareCli, anOutputThatCannotBeWrittenExitsThree) {
     const CliRun r = run_raster({"compare", kCorpus + "single_triangle.yaml", "--json", "/nonexistent-dir/out.json"});
     EXPECT_EQ(r.code, 3);
