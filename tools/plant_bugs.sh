@@ -44,7 +44,7 @@ while (($#)); do
     --keep) keep=1 ;;
     --only) (($# >= 2)) || die_usage "--only needs a name"; only+=("$2"); shift ;;
     --catalogue) (($# >= 2)) || die_usage "--catalogue needs a file"; catalogue=$2; shift ;;
-    --jobs) (($# >= 2)) && [[ $2 =~ ^[1-9][0-9]*$ ]] || die_usage "--jobs needs a positive number"; jobs=$2; shift ;;
+    --jobs) [[ ${2:-} =~ ^[1-9][0-9]*$ ]] || die_usage "--jobs needs a positive number"; jobs=$2; shift ;;
     *) die_usage "unknown argument '$1'" ;;
   esac
   shift
@@ -137,12 +137,13 @@ read_whole() {
 # check_fresh NAME TREE: the entry's find text must occur exactly once in its file under TREE (else exit 2).
 check_fresh() {
   local name=$1 tree=$2 file=$2/${entry[$1.file]} count
-  [[ -f $file ]] || die "[$name] is stale: ${entry[$name.file]} does not exist (catalogue $catalogue:${entry_line[$name]})"
+  local where="catalogue $catalogue:${entry_line[$name]}"
+  [[ -f $file ]] || die "[$name] is stale: ${entry[$name.file]} does not exist ($where)"
   read_whole "$file"
   count=$(occurrences "$REPLY" "${entry[$name.find]}")
   [[ $count -eq 1 ]] || die "[$name] is stale: its find text occurs $count times in ${entry[$name.file]}, not once" \
-                            "(catalogue $catalogue:${entry_line[$name]}); update the entry to the current source"
-  [[ -f $tree/${entry[$name.scene]} ]] || die "[$name]: no scene ${entry[$name.scene]} (catalogue $catalogue:${entry_line[$name]})"
+                            "($where); update the entry to the current source"
+  [[ -f $tree/${entry[$name.scene]} ]] || die "[$name]: no scene ${entry[$name.scene]} ($where)"
 }
 
 read_catalogue
@@ -163,7 +164,8 @@ fi
 
 # Every entry is checked against the worktree before anything is built, so a stale catalogue fails in seconds.
 for name in "${selected[@]}"; do check_fresh "$name" "$root"; done
-git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1 || die "$root is not a git checkout (git ls-files lists the source)"
+git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1 ||
+  die "$root is not a git checkout (git ls-files lists the source)"
 
 # --- The scratch tree and the correct build ---
 
@@ -178,7 +180,7 @@ mkdir -p "$src" "$logs" "$runs"
 start=$(date +%s)
 
 # Only tracked files (in their worktree state), so no build folder or stray output comes along.
-(cd "$root" && git ls-files -z | while IFS= read -r -d '' file; do [[ -e $file ]] && printf '%s\0' "$file"; done |
+(cd "$root" && git ls-files -z | while IFS= read -r -d '' tracked; do [[ -e $tracked ]] && printf '%s\0' "$tracked"; done |
   tar --null -T - -cf -) | tar -xf - -C "$src"
 
 # build LOG: builds the raster target incrementally in $build; prints its seconds; returns the build's status.
@@ -194,7 +196,8 @@ echo "plant_bugs: building the correct raster in $build" >&2
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRASTER_BUILD_TESTS=OFF -DRASTER_BUILD_BENCH=OFF \
   -DRASTER_BUILD_FUZZERS=OFF >"$logs/configure.log" 2>&1 ||
   { tail -n 30 "$logs/configure.log" >&2; die "configuring the scratch copy failed (log above)"; }
-seconds=$(build "$logs/build-correct.log") || { tail -n 30 "$logs/build-correct.log" >&2; die "the correct raster does not build (log above)"; }
+seconds=$(build "$logs/build-correct.log") ||
+  { tail -n 30 "$logs/build-correct.log" >&2; die "the correct raster does not build (log above)"; }
 cp "$build/raster" "$scratch/raster-correct"
 echo "plant_bugs: correct raster built in $seconds s" >&2
 
@@ -231,7 +234,8 @@ same_output() {
   local scene=$1 flags=() format verdict=()
   read -r -a flags <<<"$2"
   for format in png ppm; do
-    (cd "$src" && "$scratch/raster-correct" render "$scene" "${flags[@]}" -o "$scratch/correct.$format" >/dev/null 2>&1 &&
+    (cd "$src" &&
+      "$scratch/raster-correct" render "$scene" "${flags[@]}" -o "$scratch/correct.$format" >/dev/null 2>&1 &&
       "$build/raster" render "$scene" "${flags[@]}" -o "$scratch/planted.$format" >/dev/null 2>&1) ||
       { verdict+=("$format: render failed"); continue; }
     if cmp -s "$scratch/correct.$format" "$scratch/planted.$format"; then verdict+=("$format unchanged")
@@ -277,8 +281,7 @@ for name in "${selected[@]}"; do
   before=${original%%"${entry[$name.find]}"*}
   after=${original#*"${entry[$name.find]}"}
   printf '%s' "$before${entry[$name.replace]}$after" >"$file"
-  verdict=""
-  if ! seconds=$(build "$logs/build-$name.log"); then
+    if ! seconds=$(build "$logs/build-$name.log"); then
     echo "plant_bugs: [$index/${#selected[@]}] $name: the planted source does not build; see $logs/build-$name.log:" >&2
     grep -m 5 -E 'error' "$logs/build-$name.log" >&2 || true
     broken+=("$name")
@@ -288,15 +291,15 @@ for name in "${selected[@]}"; do
     run_compare "$build/raster" "$name" "${entry[$name.scene]}" "${entry[$name.flags]}"
     compare_seconds=$(($(date +%s) - compare_start))
     if [[ $rc -eq 1 && ${genuine_total:-0} -gt 0 ]]; then
-      verdict="caught: genuine $genuine_total ($caught_by)"
+      outcome="caught: genuine $genuine_total ($caught_by)"
       rows+=("| $name | $(describe "$name") | $genuine_total | $caught_by |")
     else
       output=$(same_output "${entry[$name.scene]}" "${entry[$name.flags]}")
-      verdict="NOT CAUGHT: compare exit $rc, genuine ${genuine_total:-none}; raster's output: $output"
+      outcome="NOT CAUGHT: compare exit $rc, genuine ${genuine_total:-none}; raster's output: $output"
       missed+=("$name")
       rows+=("| $name | $(describe "$name") | ${genuine_total:-none} | NOT CAUGHT (exit $rc; $output) |")
     fi
-    echo "plant_bugs: [$index/${#selected[@]}] $name: build $seconds s, compare $compare_seconds s: $verdict" >&2
+    echo "plant_bugs: [$index/${#selected[@]}] $name: build $seconds s, compare $compare_seconds s: $outcome" >&2
   fi
   printf '%s' "$original" >"$file"  # a fresh mtime, so the next build recompiles it from the real source
 done
