@@ -2,7 +2,6 @@
 // and checks every pixel of the image raster writes.
 #include <filesystem>
 #include <memory>
-#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -15,7 +14,6 @@
 #include "raster/core/file_io.h"
 #include "raster/image/image.h"
 #include "raster/formats/scene_loader.h"
-#include "raster/scene/validation.h"
 
 namespace raster::cli {
 namespace {

@@ -13,7 +13,6 @@
 #include "raster/pipeline/resolve.h"
 #include "raster/formats/scene_format_seed000.h"
 #include "raster/formats/scene_loader.h"
-#include "raster/scene/validation.h"
 
 namespace raster::cli {
 namespace {

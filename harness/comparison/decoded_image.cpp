@@ -1,4 +1,4 @@
-// Encoding with raster's writer and decoding with stb_image.
+// Encoding with raster's writer and decoding with stb_image; the oracle's image as an Image.
 #include "harness/comparison/decoded_image.h"
 
 #include <algorithm>
@@ -21,6 +21,15 @@ Image encoded_and_decoded(const Image& image, ImageFormat format) {
     std::copy(pixels, pixels + decoded.pixels.size(), decoded.pixels.begin());
     stbi_image_free(pixels);
     return decoded;
+}
+
+Image image_of(const oracle::OracleImage& oracle) {
+    Image image;
+    image.width = oracle.width;
+    image.height = oracle.height;
+    image.channels = oracle.channels;
+    image.pixels = oracle.pixels;
+    return image;
 }
 
 }  // namespace raster::harness

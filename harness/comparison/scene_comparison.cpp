@@ -20,12 +20,6 @@ oracle::RasterPixels pixels_of(const Image& image) {
     return {image.width, image.height, image.channels, image.pixels.data()};
 }
 
-Image image_of(const oracle::OracleImage& oracle) {
-    Image image(oracle.width, oracle.height, oracle.channels);
-    image.pixels = oracle.pixels;
-    return image;
-}
-
 }  // namespace
 
 uint64_t comparison_bytes(const RenderSettings& settings) {

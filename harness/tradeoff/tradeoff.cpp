@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "harness/comparison/decoded_image.h"
 #include "harness/comparison/scene_comparison.h"
 #include "oracle/reference/oracle_image.h"
 #include "oracle/reference/reference_geometry.h"
@@ -154,10 +155,7 @@ Image reference_image(const Scene& scene, int grid, const TradeoffOptions& optio
     const oracle::OracleShader shader(reference, geometry);
     const oracle::ResolveSettings resolve{reference.settings.samples, false, false,
                                           glm::dvec3(reference.settings.background)};
-    const oracle::OracleImage pixels = oracle::render_image(shader, visibility, resolve, options.threads);
-    Image image(pixels.width, pixels.height, pixels.channels);
-    image.pixels = pixels.pixels;
-    return image;
+    return image_of(oracle::render_image(shader, visibility, resolve, options.threads));
 }
 
 std::vector<bool> pareto_front(const std::vector<std::pair<double, double>>& points) {

@@ -52,21 +52,29 @@ uint64_t ComparisonCounts::genuine_total() const {
     return count(SampleClass::visibility) + count(SampleClass::barycentrics) + count(SampleClass::depth);
 }
 
-glm::dvec3 barycentric_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
-    const ReferencePolygon& polygon = reference.polygon(id);
-    const SquareRange range = reference.range_around(id, screen, polygon.radius);
-    const double bary_rounding = barycentric_rounding(polygon.relative_depth_error);
+namespace {
+
+// The barycentric tolerance with the triangle's r-square range already found.
+glm::dvec3 barycentric_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen,
+                                 const SquareRange& range) {
+    const double bary_rounding = barycentric_rounding(reference.polygon(id).relative_depth_error);
     if (!range.bounded || !std::isfinite(bary_rounding)) return glm::dvec3(kInfinity);
     // Both renderers round: twice the per-renderer rounding; and Embree's own evaluation error.
     return (range.max_bary - range.min_bary) + glm::dvec3(2.0 * bary_rounding) +
            reference.embree_barycentric_error(id, screen);
 }
 
+}  // namespace
+
+glm::dvec3 barycentric_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
+    return barycentric_tolerance(reference, id, screen, reference.range_around(id, screen, reference.polygon(id).radius));
+}
+
 AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
     const ReferencePolygon& polygon = reference.polygon(id);
     const SquareRange range = reference.range_around(id, screen, polygon.radius);
     const double depth_rounding = view_depth_rounding(polygon.relative_depth_error);
-    const glm::dvec3 bary = barycentric_tolerance(reference, id, screen);
+    const glm::dvec3 bary = barycentric_tolerance(reference, id, screen, range);
     if (!range.bounded || !std::isfinite(depth_rounding) || !std::isfinite(bary.x))
         return {glm::dvec3(kInfinity), kInfinity};
     AgreementTolerance tolerance;

@@ -17,7 +17,6 @@
 namespace raster::oracle {
 namespace {
 
-
 constexpr size_t kPacketSize = 8;  // RTCRayHit8
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -126,11 +125,7 @@ OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const
             rtcIntersect8(valid, handle.scene, &context, &packet);
             for (size_t k = 0; k < count; ++k) {
                 const size_t at = row_first + begin + k;
-                if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
-                    out.bary[at] = glm::vec3(0.0f);
-                    out.view_depth[at] = 0.0f;
-                    continue;
-                }
+                if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;  // resize left it empty
                 const float u = packet.hit.u[k], v = packet.hit.v[k];
                 out.triangle[at] = scene_triangle[packet.hit.primID[k]];
                 out.bary[at] = glm::vec3(1.0f - u - v, u, v);

@@ -145,8 +145,6 @@ double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, co
 
 ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geometry)
     : camera_(geometry.camera),
-      width_(scene.settings.width),
-      height_(scene.settings.height),
       near_(scene.camera.near),
       far_(scene.camera.far) {
     const glm::dmat4& projection = camera_.projection;
@@ -206,7 +204,7 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
         // position at all (screen_error is infinite), and then neither has anything about the triangle.
         for (const ClipVertex& v : clipped.empty() ? original : clipped) {
             if (clipped.empty() && !(v.clip.w + v.error.w >= near_)) continue;
-            const glm::dvec2 error = screen_error(v.clip, v.error, width_, height_);
+            const glm::dvec2 error = screen_error(v.clip, v.error, camera_.width, camera_.height);
             out.radius = std::max(out.radius, snap + std::max(error.x, error.y));
             out.depth_error = std::max(out.depth_error, v.error.w);
             out.relative_depth_error = std::max(out.relative_depth_error, relative_depth_error(v.clip.w, v.error.w));

@@ -99,7 +99,6 @@ private:
     double embree_view_depth_error(uint32_t id, const glm::dvec2& screen, const ExactHit& exact) const;
 
     OracleCamera camera_;
-    int width_ = 0, height_ = 0;
     double near_ = 0, far_ = 0;
     std::vector<ViewTriangle> triangles_;
     std::vector<ReferencePolygon> polygons_;
