@@ -3,13 +3,11 @@
 
 #include <cmath>
 
+#include <glm/vec2.hpp>
+
 #include "raster/core/conventions.h"
 
 namespace raster::reference {
-
-__int128 orient(Point a, Point b, Point p) {
-    return static_cast<__int128>(b.x - a.x) * (p.y - a.y) - static_cast<__int128>(b.y - a.y) * (p.x - a.x);
-}
 
 bool owns_edge(Point a, Point b, Point c) {
     if (a.y == b.y) return c.y > a.y;
@@ -64,13 +62,36 @@ int64_t snap_coordinate(double screen, int snap_bits) {
     return static_cast<int64_t>(snapped) * (int64_t{1} << (fixed_bits - snap_bits));
 }
 
-Point snapped_vertex(const glm::vec4& clip, int width, int height, int snap_bits) {
-    // The divide as a multiplication by 1/w in double, the same rounding as setup, so that no vertex lands on the
-    // other side of a half-way point by one double ulp.
+namespace {
+
+// The screen position of a clip-space vertex. The divide as a multiplication by 1/w in double, the same rounding as
+// setup, so that no vertex lands on the other side of a half-way point by one double ulp.
+glm::dvec2 screen_position(const glm::vec4& clip, int width, int height) {
     const double inv_w = 1.0 / static_cast<double>(clip.w);
-    const double sx = (static_cast<double>(clip.x) * inv_w + 1.0) * 0.5 * width;
-    const double sy = (1.0 - static_cast<double>(clip.y) * inv_w) * 0.5 * height;
-    return {snap_coordinate(sx, snap_bits), snap_coordinate(sy, snap_bits)};
+    return {(static_cast<double>(clip.x) * inv_w + 1.0) * 0.5 * width,
+            (1.0 - static_cast<double>(clip.y) * inv_w) * 0.5 * height};
+}
+
+// snap_coordinate clamped to [low, high], decided in double before any conversion to an integer.
+int64_t clamped_snap_coordinate(double screen, int snap_bits, int64_t low, int64_t high) {
+    const double fixed = std::floor(screen * std::ldexp(1.0, snap_bits) + 0.5) *
+                         std::ldexp(1.0, fixed_bits_for(snap_bits) - snap_bits);
+    if (!(fixed > static_cast<double>(low))) return low;  // NaN included
+    if (!(fixed < static_cast<double>(high))) return high;
+    return static_cast<int64_t>(fixed);
+}
+
+}  // namespace
+
+Point snapped_vertex(const glm::vec4& clip, int width, int height, int snap_bits) {
+    const glm::dvec2 screen = screen_position(clip, width, height);
+    return {snap_coordinate(screen.x, snap_bits), snap_coordinate(screen.y, snap_bits)};
+}
+
+Point snapped_vertex(const glm::vec4& clip, int width, int height, int snap_bits, Point low, Point high) {
+    const glm::dvec2 screen = screen_position(clip, width, height);
+    return {clamped_snap_coordinate(screen.x, snap_bits, low.x, high.x),
+            clamped_snap_coordinate(screen.y, snap_bits, low.y, high.y)};
 }
 
 int64_t snap_to_grid(double screen, int snap_bits, int fixed_bits) {
