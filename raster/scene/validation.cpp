@@ -57,6 +57,14 @@ std::optional<CameraProblem> camera_problem(const Camera& c) {
     if (!(c.far > c.near) || !std::isfinite(c.far))
         return CameraProblem{CameraField::far, "camera far (" + std::to_string(c.far) +
                                                    ") must be finite and greater than near (" + std::to_string(c.near) + ")"};
+    // And w goes up to far: past 2^126, 1 / far is a subnormal float, whose lost bits can carry a view depth at the
+    // far plane past the largest float (the raster fuzz target found infinite view depths there).
+    if (c.far > 0x1p126f) {
+        char far[32];
+        std::snprintf(far, sizeof far, "%g", double(c.far));
+        return CameraProblem{CameraField::far, std::string("camera far must be at most 8.50706e+37 (1 / far a normal "
+                                                           "float), got ") + far};
+    }
     if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
         return CameraProblem{CameraField::fov,
                              "camera field of view must be in (0, 180) degrees, got " + std::to_string(c.fov_y_degrees)};

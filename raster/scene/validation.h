@@ -15,8 +15,9 @@ namespace raster {
 inline constexpr uint64_t kMaxFrameBytes = uint64_t{4} << 30;  // 4 GiB
 uint64_t frame_bytes(const RenderSettings& settings);
 
-// Checks image size and frame memory, samples and pattern, camera (near > 0, far > near, fov in (0, 180),
-// eye != target, up not parallel to the view direction), snap bits, finite numbers, and triangle indices in range.
+// Checks image size and frame memory, samples and pattern, camera (near > 0, far > near and at most 2^126, fov in
+// (0, 180), eye != target, up not parallel to the view direction), snap bits, finite numbers, and triangle indices in
+// range.
 // Throws InputError naming scene.path.
 void validate_scene(const Scene& scene);
 

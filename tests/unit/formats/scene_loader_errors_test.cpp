@@ -90,6 +90,8 @@ const std::vector<Rejection> kRejections = {
     {"nearZero", with_triangle("camera:\n  fov: 45\n  near: 0\n"), 3, 9, "near must be > 0"},
     {"farBeforeNear", with_triangle("camera:\n  near: 10\n  far: 5\n"), 3, 8, "far", {"near"}},
     {"farAtNear", with_triangle("camera:\n  near: 10\n  far: 10\n"), 3, 8, "far"},
+    // Past 2^126 (8.5e37) 1 / far is a subnormal float.
+    {"farPastANormalInverse", with_triangle("camera:\n  far: 1e38\n"), 2, 8, "far must be at most 8.50706e+37"},
     // far left at its default 100: the near value is the one to blame.
     {"nearBeyondTheDefaultFar", with_triangle("camera:\n  fov: 30\n  near: 200\n"), 3, 9, "far"},
     {"fieldOfViewZero", with_triangle("camera:\n  fov: 0\n"), 2, 8, "(0, 180)"},
