@@ -59,15 +59,14 @@ std::string DocumentReader::unknown_keys(const Node& map, std::initializer_list<
 void DocumentReader::check_keys(const Node& map, std::initializer_list<const char*> allowed) const {
     for (const Node::Entry& entry : map.entries()) {
         const std::string key = entry.key.is_scalar() ? entry.key.text() : "";
-        bool known = false;
+        if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+        // Only an unknown key pays for the edit distances of the suggestion.
         const char* closest = nullptr;
         size_t closest_distance = 3;  // suggest only near misses
         for (const char* name : allowed) {
-            if (key == name) known = true;
             const size_t distance = edit_distance(key, name);
             if (distance < closest_distance) closest_distance = distance, closest = name;
         }
-        if (known) continue;
         std::string message = "unknown key '" + key + "'";
         if (closest) message += std::string(" (did you mean '") + closest + "'?)";
         else {
