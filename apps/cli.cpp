@@ -1,6 +1,7 @@
 // The `raster` command line: parses flags with CLI11, runs the subcommand, maps failures to exit codes.
 #include "apps/cli.h"
 
+#include <memory>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -17,16 +18,43 @@ constexpr const char* kDescription =
 
 }  // namespace
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    CLI::App app(kDescription, "raster");
-    app.require_subcommand(1);
-    const std::vector<Command> commands = {
-        add_render_command(app),
-        add_compare_command(app),
-        add_report_command(app),
-        add_tradeoff_command(app),
-        add_balboa_command(app),
-    };
+struct CommandLine::Parser {
+    CLI::App app{kDescription, "raster"};
+    std::vector<Command> commands;
+
+    Parser() {
+        app.require_subcommand(1);
+        commands = {
+            add_render_command(app),
+            add_compare_command(app),
+            add_report_command(app),
+            add_tradeoff_command(app),
+            add_balboa_command(app),
+        };
+    }
+};
+
+CommandLine::CommandLine() : parser_(std::make_unique<Parser>()) {}
+CommandLine::~CommandLine() = default;
+
+int CommandLine::run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    // Each run leaves the parser as it found it, however it ends: CLI11 keeps what a parse saw (clear() frees it)
+    // and the bound variables as the parse set them (reset() restores every default). So the next run starts from
+    // the defaults, and a run frees what it allocated (a fuzzer counts that: a run that frees its predecessor's
+    // memory looks like one that leaks, and is run again under the leak checker).
+    struct Restore {
+        Parser& parser;
+        ~Restore() {
+            parser.app.clear();
+            for (const Command& command : parser.commands) command.reset();
+        }
+    } restore{*parser_};
+    return run_once(args, out, err);
+}
+
+int CommandLine::run_once(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    CLI::App& app = parser_->app;
+    const std::vector<Command>& commands = parser_->commands;
 
     std::vector<std::string> reversed(args.rbegin(), args.rend());
     if (!reversed.empty()) reversed.pop_back();  // program name
@@ -55,6 +83,11 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         return kExitIoError;
     }
     return kExitBadInput;
+}
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    CommandLine command_line;
+    return command_line.run(args, out, err);
 }
 
 }  // namespace raster::cli

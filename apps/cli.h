@@ -1,6 +1,7 @@
 // The `raster` command line: subcommands, flags, messages and exit codes (testable without a process).
 #pragma once
 
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -15,5 +16,24 @@ inline constexpr int kExitIoError = 3;      // the input was fine but an output 
 
 // Runs `raster` with argv-style arguments (args[0] is the program name), writing to out and err.
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+// The same command line built once and run many times (the cli fuzz target runs thousands of argument lists a
+// second, and registering every subcommand's flags costs more than most runs): each run starts from every flag's
+// default, so it behaves exactly as run() on the same arguments.
+class CommandLine {
+public:
+    CommandLine();
+    ~CommandLine();
+    CommandLine(const CommandLine&) = delete;
+    CommandLine& operator=(const CommandLine&) = delete;
+
+    int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+private:
+    struct Parser;
+    int run_once(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+    std::unique_ptr<Parser> parser_;
+};
 
 }  // namespace raster::cli

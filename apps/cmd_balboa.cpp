@@ -198,7 +198,10 @@ Command add_balboa_command(CLI::App& app) {
     balboa->prefix_command();
     balboa->allow_extras();
     balboa->set_help_flag();
-    return {balboa, [balboa](std::ostream& out, std::ostream& err) { return run_balboa(balboa->remaining(), out, err); }};
+    // No flags of its own to reset: what it runs is the parse's remaining arguments.
+    return {balboa,
+            [balboa](std::ostream& out, std::ostream& err) { return run_balboa(balboa->remaining(), out, err); },
+            [] {}};
 }
 
 }  // namespace raster::cli

@@ -91,7 +91,8 @@ Command add_compare_command(CLI::App& app) {
     auto flags = std::make_shared<CompareFlags>();
     register_compare_flags(app, *flags);
     return {app.get_subcommand("compare"),
-            [flags](std::ostream& out, std::ostream& err) { return run_compare(*flags, out, err); }};
+            [flags](std::ostream& out, std::ostream& err) { return run_compare(*flags, out, err); },
+            [flags] { *flags = CompareFlags{}; }};
 }
 
 }  // namespace raster::cli

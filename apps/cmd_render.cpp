@@ -110,7 +110,9 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
 Command add_render_command(CLI::App& app) {
     auto flags = std::make_shared<RenderFlags>();
     register_render_flags(app, *flags);
-    return {app.get_subcommand("render"), [flags](std::ostream& out, std::ostream& err) { return run_render(*flags, out, err); }};
+    return {app.get_subcommand("render"),
+            [flags](std::ostream& out, std::ostream& err) { return run_render(*flags, out, err); },
+            [flags] { *flags = RenderFlags{}; }};
 }
 
 }  // namespace raster::cli

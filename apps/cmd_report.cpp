@@ -216,7 +216,8 @@ Command add_report_command(CLI::App& app) {
     auto flags = std::make_shared<ReportFlags>();
     register_report_flags(app, *flags);
     return {app.get_subcommand("report"),
-            [flags](std::ostream& out, std::ostream& err) { return run_report(*flags, out, err); }};
+            [flags](std::ostream& out, std::ostream& err) { return run_report(*flags, out, err); },
+            [flags] { *flags = ReportFlags{}; }};
 }
 
 }  // namespace raster::cli

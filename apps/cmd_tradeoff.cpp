@@ -194,7 +194,8 @@ Command add_tradeoff_command(CLI::App& app) {
     auto flags = std::make_shared<TradeoffFlags>();
     register_tradeoff_flags(app, *flags);
     return {app.get_subcommand("tradeoff"),
-            [flags](std::ostream& out, std::ostream& err) { return run_tradeoff(*flags, out, err); }};
+            [flags](std::ostream& out, std::ostream& err) { return run_tradeoff(*flags, out, err); },
+            [flags] { *flags = TradeoffFlags{}; }};
 }
 
 }  // namespace raster::cli

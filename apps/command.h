@@ -16,6 +16,7 @@ using CommandAction = std::function<int(std::ostream& out, std::ostream& err)>;
 struct Command {
     CLI::App* app;  // the subcommand, owned by the parent app
     CommandAction action;
+    std::function<void()> reset;  // puts its flags back to their defaults, after each run of a reused app
 };
 
 // One function per subcommand, each in apps/cmd_<name>.cpp.

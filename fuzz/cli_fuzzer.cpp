@@ -1,4 +1,5 @@
-// Fuzz target: the `raster` command line (raster::cli::run) with fuzzed arguments, run inside a sandbox folder.
+// Fuzz target: the `raster` command line (raster::cli::CommandLine, built once, each run as a fresh `raster`) with
+// fuzzed arguments, run inside a sandbox folder.
 //
 // The input is the argument list, separated by NUL bytes. Arguments containing '/' are refused, so every file the
 // command reads or writes is a bare name in the sandbox (and so are newlines, so that no argument echoed in a
@@ -73,11 +74,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     raster::fuzz::Sandbox& sandbox = cli_sandbox();
     std::vector<std::string> args;
     if (!arguments_from(std::string_view(reinterpret_cast<const char*>(data), size), args)) return 0;
+    // Registering every subcommand's flags costs more than most runs; the command line resets them for each run.
+    static raster::cli::CommandLine command_line;
     std::ostringstream out, err;
     int code;
     {
         const raster::fuzz::WorkingDirectory inside(sandbox.path());
-        code = raster::cli::run(args, out, err);
+        code = command_line.run(args, out, err);
     }
     sandbox.restore();
     // run() turns exceptions other than input errors into "internal error": for these inputs that is a bug.

@@ -10,8 +10,8 @@
 
 namespace raster::fuzz {
 
-// A fresh folder under the system temp directory holding `fixtures` (name, content), removed at exit. Targets make
-// one in a function-local static, so the setup runs once per process.
+// A fresh folder in memory (/dev/shm, else the system temp directory) holding `fixtures` (name, content), removed at
+// exit. Targets make one in a function-local static, so the setup runs once per process.
 class Sandbox {
 public:
     using Fixtures = std::vector<std::pair<std::string, std::string>>;
