@@ -20,8 +20,14 @@ struct Interval {
     static Interval everything() {
         return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     }
-    // Widened by `by` on both sides.
-    Interval widened(double by) const { return {lo - by, hi + by}; }
+    // Widened by `by` on both sides. An allowance that is NaN (a magnitude product inf * 0: an unbounded operand
+    // next to a zero one) bounds nothing, so the result is everything; NaN bounds would read as "nowhere" to every
+    // comparison after (the differential fuzzer found a light skipped, and a pixel's allowed colour left at its
+    // ambient part, for a sample whose barycentric tolerance was unbounded).
+    Interval widened(double by) const {
+        if (std::isnan(by)) return everything();
+        return {lo - by, hi + by};
+    }
     bool contains(double v) const { return lo <= v && v <= hi; }
     double magnitude() const { return std::max(std::fabs(lo), std::fabs(hi)); }
 };
