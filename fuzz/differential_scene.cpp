@@ -1,11 +1,15 @@
-// The differential target's scenes: its limits, validation and magnification filter.
+// The differential target's cases: its limits, the precision modes it draws and what the oracle judges in each,
+// extreme coordinates, validation and the filters that keep what the oracle's bounds cover.
 #include "fuzz/differential_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include "fuzz/fuzzed_scene.h"
+#include "oracle/reference/reference_geometry.h"
+#include "oracle/reference/scene_geometry.h"
 #include "raster/core/errors.h"
 #include "raster/scene/camera_matrices.h"
 #include "raster/scene/validation.h"
@@ -13,37 +17,132 @@
 namespace raster::fuzz {
 namespace {
 
-// Largest projection magnification compared (see the known limitation below).
+// Largest projection magnification compared, on either axis (see the known limitation below).
 constexpr double kMaxMagnification = 1e3;
+// Extreme coordinates: at most this many vertices from raw float bits or the table of extremes.
+constexpr int kMaxExtremeVertices = 3;
+// A case with extreme coordinates is compared only where the oracle's bounds say something: every triangle's radius
+// (snap plus float error of its vertices, precision.h section 4) under a pixel. A wider edge band covers most of a
+// 32-pixel frame: every disagreement there would be excused, which measures nothing and only inflates the excused
+// fraction that `differential_excuses` reports.
+constexpr double kMaxExtremeRadius = 1.0;
+
+// A precision mode and what the oracle's precision model (oracle/reference/precision.h) bounds in it.
+struct ModeVariant {
+    const char* name;
+    PrecisionModes modes;
+    JudgedClasses judged;
+};
+
+// The modes drawn, the defaults first (what an exhausted input, or one saved before modes were drawn, gets):
+//  - the defaults, and hierarchical Z off (it never changes a pixel): everything is judged;
+//  - affine interpolation: visibility (the depth test's key is z/w, which interpolation leaves alone), not the
+//    barycentrics, depth and colour, which the oracle interpolates perspective-correctly by definition;
+//  - float z and fixed24 depth: the barycentrics, depth and colour of agreeing samples (interpolation ignores the
+//    depth format), not visibility: their keys tie over steps of about 2^-24 in z/w (fixed24 everywhere, float z
+//    toward the far plane), far coarser than the float reversed-Z tie bound (precision.h, section 5).
+// Left out, because the oracle cannot bound them: float edges (raster's float edge values are off by up to 2^-19 M^2
+// at coordinates M on the fixed-point grid, so edges move by far more than the oracle's radius, and shared edges
+// crack or double by design) and the guard band (raster snaps unclipped vertices beyond the viewport, whose float
+// error the radius, measured at the oracle's vertices clipped to the viewport, does not bound).
+constexpr PrecisionModes kDefaults{};
+constexpr PrecisionModes with_hierarchical_z_off() {
+    PrecisionModes modes;
+    modes.hierarchical_z = false;
+    return modes;
+}
+constexpr PrecisionModes with_interpolation(Interpolation interpolation) {
+    PrecisionModes modes;
+    modes.interpolation = interpolation;
+    return modes;
+}
+constexpr PrecisionModes with_depth(DepthFormat depth) {
+    PrecisionModes modes;
+    modes.depth = depth;
+    return modes;
+}
+constexpr ModeVariant kModeVariants[] = {
+    {"default", kDefaults, {true, true}},
+    {"hierarchical z off", with_hierarchical_z_off(), {true, true}},
+    {"affine", with_interpolation(Interpolation::affine), {true, false}},
+    {"depth float", with_depth(DepthFormat::float_z), {false, true}},
+    {"depth fixed24", with_depth(DepthFormat::fixed24), {false, true}},
+};
+
+// Up to kMaxExtremeVertices vertices replaced by positions from raw float bits or the table of extremes, and the
+// whole scene (eye, target, vertices, lights) moved by an offset drawn the same way; false when nothing was drawn.
+bool draw_extremes(FuzzedDataProvider& input, Scene& scene) {
+    std::vector<glm::vec3>& positions = scene.meshes.front().data.positions;
+    const int vertices = input.ConsumeIntegralInRange(0, kMaxExtremeVertices);
+    for (int i = 0; i < vertices; ++i)
+        positions[input.ConsumeIntegralInRange<size_t>(0, positions.size() - 1)] =
+            fuzzed_finite_vec3(input, -10.0f, 10.0f, true);
+    const bool moved = input.ConsumeBool();
+    if (moved) {
+        const glm::vec3 offset = fuzzed_finite_vec3(input, -1e6f, 1e6f, true);
+        scene.camera.eye += offset;
+        scene.camera.target += offset;
+        for (glm::vec3& p : positions) p += offset;
+        for (Light& light : scene.lights) light.position += offset;
+    }
+    return vertices > 0 || moved;
+}
+
+// Every triangle's radius is under kMaxExtremeRadius (the oracle's own reference geometry, as it compares with).
+bool bounds_say_something(const Scene& scene) {
+    const oracle::ReferenceGeometry reference(scene, oracle::oracle_scene(scene));
+    for (uint32_t id = 0; id < reference.size(); ++id)
+        if (!(reference.polygon(id).radius < kMaxExtremeRadius)) return false;
+    return true;
+}
 
 }  // namespace
 
-std::optional<Scene> differential_scene(const uint8_t* data, size_t size) {
+std::optional<DifferentialCase> differential_case(const uint8_t* data, size_t size) {
     FuzzedDataProvider input(data, size);
     FuzzedSceneLimits limits;
     limits.max_side = 32;
     limits.max_grid_side = 2;
     limits.max_triangles = 8;
-    // Ordinary positions only: Embree intersects in float, so a triangle with a vertex at 1e9 gets hits that are
-    // off by many pixels, which the comparator's bounds (derived from raster's precision) do not cover. Extreme
-    // positions are the raster target's business; the lens (fov, near, far) still takes extremes here.
+    // Ordinary positions in the scene itself: extreme ones come after (draw_extremes), so that the inputs saved
+    // before they existed still make the same scenes. The lens (fov, near, far) always takes extremes.
     limits.extreme_coordinates = false;
-    // The oracle's precision model is that of the default modes; the cheaper modes disagree by design (measured by
-    // `raster tradeoff`, not checked here).
+    // The precision modes come from kModeVariants below, not from fuzzed_scene's own draw of every mode.
     limits.precision_modes = false;
-    Scene scene = fuzzed_scene(input, limits);
+    DifferentialCase result;
+    result.scene = fuzzed_scene(input, limits);
+    Scene& scene = result.scene;
+    // Drawn last, so that an input that runs out first keeps the defaults.
+    const ModeVariant& variant = input.PickValueInArray(kModeVariants);
+    scene.settings.modes = variant.modes;
+    result.judged = variant.judged;
+    result.modes = variant.name;
+    result.extreme = draw_extremes(input, scene);
     try {
         validate_scene(scene);
     } catch (const InputError&) {
         return std::nullopt;
     }
     // Known limitation, skipped here: raster works in float clip space, so a projection that magnifies by more
-    // than ~1e3 (a field of view under ~0.1 degree) amplifies float rounding past the comparator's bounds: at 1e26
-    // the clipped polygon's corners are lost to cancellation (quarter-screen errors), at 6e5 a sliver's
-    // barycentrics drift. A non-finite projection is validate_scene's to reject.
-    const float focal = projection_matrix(scene.camera, scene.settings.width, scene.settings.height)[1][1];
-    if (std::isfinite(focal) && focal > kMaxMagnification) return std::nullopt;
-    return scene;
+    // than ~1e3 on either axis (a field of view under ~0.1 degree, or a narrow image, whose x scale is the focal
+    // length over the aspect) amplifies float rounding past the comparator's bounds: at 1e26 the clipped polygon's
+    // corners are lost to cancellation (quarter-screen errors), at 6e5 a sliver's barycentrics drift. A non-finite
+    // projection is validate_scene's to reject.
+    const glm::mat4 projection = projection_matrix(scene.camera, scene.settings.width, scene.settings.height);
+    const float magnification = std::max(std::fabs(projection[0][0]), std::fabs(projection[1][1]));
+    if (std::isfinite(magnification) && magnification > kMaxMagnification) return std::nullopt;
+    if (result.extreme && !bounds_say_something(scene)) return std::nullopt;
+    return result;
+}
+
+uint64_t judged_genuine(const harness::Comparison& comparison, const JudgedClasses& judged) {
+    const oracle::ComparisonCounts& counts = comparison.visibility.counts;
+    uint64_t total = 0;
+    if (judged.visibility) total += counts.count(oracle::SampleClass::visibility);
+    if (judged.interpolation)
+        total += counts.count(oracle::SampleClass::barycentrics) + counts.count(oracle::SampleClass::depth) +
+                 comparison.colour_genuine_pixels;
+    return total;
 }
 
 }  // namespace raster::fuzz
