@@ -179,6 +179,7 @@ void ReferenceFrame::add_polygon(uint32_t triangle, const glm::vec4* positions, 
         }
         ReferencePiece piece;
         piece.triangle = triangle;
+        piece.reversed = v[1] != &vertex[k];
         piece.area2 = static_cast<double>(area2);
         piece.certain = certain;
         int64_t min_x = v[0]->at.x, max_x = min_x, min_y = v[0]->at.y, max_y = min_y, magnitude = coordinate_limit;

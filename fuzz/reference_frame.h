@@ -41,6 +41,7 @@ struct ReferencePiece {
     uint32_t triangle = 0;      // the scene triangle
     ReferenceVertex vertex[3];  // wound so that orient(v0, v1, v2) > 0; vertex 0 is the fan's centre
     double area2 = 0;           // orient(v0, v1, v2)
+    bool reversed = false;      // vertices 1 and 2 were swapped to wind it so: the polygon's order was the other way
     double edge_error = 0;      // float edges: bound on |raster's edge value - exact|; 0 for fixed-point edges
     bool certain = true;       // false when the facing is undecided with culling on: its coverage is at most maybe
     int min_x = 0, min_y = 0, max_x = -1, max_y = -1;  // the pixels its box touches inside the frame
