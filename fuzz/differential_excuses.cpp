@@ -1,7 +1,7 @@
 // The differential corpus's excuse accounting: every input of the given folders through the differential target's
-// cases and comparison, summed; prints how many cases each precision mode had (and how many had extreme
-// coordinates) and, per class, how many samples the precision model excused and what fraction of all compared
-// samples that is. Exit 0 when no input has a genuine disagreement of a class its mode lets the oracle judge, 1
+// cases and comparison, summed; prints how many cases each precision mode had and, per class, how many samples the
+// precision model excused and what fraction of the compared samples that is: over all cases, and over those with
+// ordinary and with extreme coordinates apart. Exit 0 when no input has a genuine disagreement of a class its mode lets the oracle judge, 1
 // otherwise, 2 on bad usage.
 #include <cstdio>
 #include <filesystem>
@@ -15,9 +15,41 @@
 #include "fuzz/differential_scene.h"
 #include "harness/comparison/scene_comparison.h"
 
+namespace {
+
+using raster::oracle::SampleClass;
+
+// The classes' counts over some of the cases.
+struct Tally {
+    raster::oracle::ComparisonCounts counts;
+    uint64_t samples = 0, scenes = 0;
+
+    void add(const raster::harness::Comparison& comparison) {
+        ++scenes;
+        samples += comparison.visibility.classes.size();
+        for (int c = 0; c < raster::oracle::kSampleClassCount; ++c)
+            counts.by_class[c] += comparison.visibility.counts.by_class[c];
+    }
+};
+
+// Per ambiguous class, the samples it excused and their fraction of the tally's samples.
+void print_excuses(const char* title, const Tally& tally) {
+    std::printf("%s: %llu scenes, %llu samples\n", title, static_cast<unsigned long long>(tally.scenes),
+                static_cast<unsigned long long>(tally.samples));
+    const double all = tally.samples ? static_cast<double>(tally.samples) : 1.0;
+    const auto line = [&](const char* name, uint64_t count) {
+        std::printf("  %-14s %10llu  %.4f%%\n", name, static_cast<unsigned long long>(count), 100.0 * count / all);
+    };
+    for (SampleClass k :
+         {SampleClass::edge_band, SampleClass::depth_tie, SampleClass::clip_boundary, SampleClass::facing})
+        line(raster::oracle::to_string(k), tally.counts.count(k));
+    line("ambiguous", tally.counts.ambiguous_total());
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     namespace fs = std::filesystem;
-    using raster::oracle::SampleClass;
     if (argc < 2) {
         std::fprintf(stderr, "usage: %s DIR|FILE...\n", argv[0]);
         return 2;
@@ -31,8 +63,10 @@ int main(int argc, char** argv) {
             inputs.push_back(argv[i]);
         }
     }
-    raster::oracle::ComparisonCounts total;
-    uint64_t compared = 0, scenes = 0, extreme = 0, genuine_inputs = 0;
+    // All cases, and apart those with ordinary and with extreme coordinates: extremes excuse more, and the split
+    // shows how much.
+    Tally all, ordinary, extreme;
+    uint64_t genuine_inputs = 0;
     std::map<std::string, uint64_t> by_modes;
     for (const fs::path& path : inputs) {
         std::ifstream file(path, std::ios::binary);
@@ -43,29 +77,21 @@ int main(int argc, char** argv) {
         raster::harness::ComparisonOptions options;
         options.threads = 1;
         const raster::harness::Comparison comparison = raster::harness::compare_scene(input->scene, options);
-        ++scenes;
         ++by_modes[input->modes];
-        extreme += input->extreme;
-        compared += comparison.visibility.classes.size();
-        for (int c = 0; c < raster::oracle::kSampleClassCount; ++c)
-            total.by_class[c] += comparison.visibility.counts.by_class[c];
+        all.add(comparison);
+        (input->extreme ? extreme : ordinary).add(comparison);
         if (raster::fuzz::judged_genuine(comparison, input->judged) > 0) {
             ++genuine_inputs;
             std::printf("GENUINE in %s (modes %s): %s\n", path.c_str(), input->modes,
                         raster::harness::genuine_reasons(comparison).c_str());
         }
     }
-    std::printf("%zu inputs, %llu scenes compared (%llu with extreme coordinates), %llu samples\n", inputs.size(),
-                static_cast<unsigned long long>(scenes), static_cast<unsigned long long>(extreme),
-                static_cast<unsigned long long>(compared));
+    std::printf("%zu inputs\n", inputs.size());
     for (const auto& [modes, count] : by_modes)
         std::printf("  modes %-20s %6llu scenes\n", modes.c_str(), static_cast<unsigned long long>(count));
-    const double all = compared ? static_cast<double>(compared) : 1.0;
-    for (SampleClass k : {SampleClass::edge_band, SampleClass::depth_tie, SampleClass::clip_boundary, SampleClass::facing})
-        std::printf("  %-14s %10llu  %.4f%%\n", raster::oracle::to_string(k),
-                    static_cast<unsigned long long>(total.count(k)), 100.0 * total.count(k) / all);
-    std::printf("  %-14s %10llu  %.4f%%\n", "ambiguous", static_cast<unsigned long long>(total.ambiguous_total()),
-                100.0 * total.ambiguous_total() / all);
-    std::printf("  %-14s %10llu inputs\n", "genuine", static_cast<unsigned long long>(genuine_inputs));
+    print_excuses("all compared", all);
+    print_excuses("ordinary coordinates", ordinary);
+    print_excuses("extreme coordinates", extreme);
+    std::printf("genuine: %llu inputs\n", static_cast<unsigned long long>(genuine_inputs));
     return genuine_inputs == 0 ? 0 : 1;
 }
