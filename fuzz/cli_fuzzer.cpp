@@ -5,11 +5,18 @@
 // command reads or writes is a bare name in the sandbox (and so are newlines, so that no argument echoed in a
 // message can fake the start of a line). The sandbox holds tiny scenes (8 x 8 pixels at most, one per format),
 // and argument lists with a "2_1" are skipped: `raster balboa -hw 2_1` always renders 640 x 480 x 16 samples,
-// seconds under the sanitizers. So no input makes the command render a large image. The sandbox is restored after
-// every input, so outputs of one input never change what the next one sees.
+// seconds under the sanitizers. So no input makes the command render a large image. A `report` or `tradeoff` that
+// would take more than one scene (a folder counts as all the scenes in it) is skipped too, and so is a `tradeoff`
+// with --runs or --reference-grid: each scene of a report is a whole comparison and a page of images, and reports
+// of the whole sandbox, 20 ms or more each, took most of the target's time (under 600 inputs a second); a tradeoff
+// renders every mode --runs times, 2 s at --runs 100 for one tiny scene, past the 1 s hang limit. Their one-scene,
+// default forms keep every path of both commands. The sandbox is restored after every input, so outputs of one
+// input never change what the next one sees.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -21,6 +28,8 @@
 namespace {
 
 constexpr size_t kMaxArguments = 32;
+// The sandbox's scenes, each of which `report` and `tradeoff` take when named.
+constexpr std::string_view kSceneFixtures[] = {"s.yaml", "s.json", "b.json", "c.yaml"};
 
 raster::fuzz::Sandbox& cli_sandbox() {
     static raster::fuzz::Sandbox sandbox("cli", {
@@ -68,12 +77,35 @@ bool arguments_from(std::string_view input, std::vector<std::string>& args) {
     return true;
 }
 
+// At most how many scenes a `report` or `tradeoff` with these arguments could take: each fixture scene named, and
+// every scene of a folder named ("." is the sandbox, ".." its parent, whose scenes are unknown: counted as two).
+size_t scenes_named(const std::vector<std::string>& args) {
+    size_t scenes = 0;
+    for (const std::string& argument : args) {
+        if (argument == ".") scenes += std::size(kSceneFixtures);
+        if (argument == "..") scenes += 2;
+        for (std::string_view fixture : kSceneFixtures) scenes += argument == fixture;
+    }
+    return scenes;
+}
+
+// The argument lists skipped for their work (see the top of the file).
+bool is_heavy(const std::vector<std::string>& args) {
+    const auto has = [&](const char* word) { return std::find(args.begin(), args.end(), word) != args.end(); };
+    const bool tradeoff = has("tradeoff");
+    if ((tradeoff || has("report")) && scenes_named(args) > 1) return true;
+    return tradeoff && std::any_of(args.begin(), args.end(), [](const std::string& argument) {
+               return argument.starts_with("--runs") || argument.starts_with("--reference-grid");
+           });
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     raster::fuzz::Sandbox& sandbox = cli_sandbox();
     std::vector<std::string> args;
-    if (!arguments_from(std::string_view(reinterpret_cast<const char*>(data), size), args)) return 0;
+    if (!arguments_from(std::string_view(reinterpret_cast<const char*>(data), size), args) || is_heavy(args))
+        return 0;
     // Registering every subcommand's flags costs more than most runs; the command line resets them for each run.
     static raster::cli::CommandLine command_line;
     std::ostringstream out, err;
