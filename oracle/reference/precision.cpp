@@ -14,6 +14,12 @@ double snap_displacement(int snap_bits) { return std::ldexp(1.0, -(snap_bits + 1
 
 glm::dvec4 vertex_error(const glm::dvec4& magnitudes) { return float_gamma(kVertexRoundings) * magnitudes; }
 
+double plane_noise(const glm::dvec3& edge1, const glm::dvec3& edge2, double vertex_magnitude) {
+    const double delta = double_gamma(kOracleDoubleViewRoundings) * vertex_magnitude;
+    const double e1 = glm::length(edge1), e2 = glm::length(edge2);
+    return 2.0 * delta * (e1 + e2 + 2.0 * delta) + double_gamma(4) * e1 * e2;
+}
+
 glm::dvec4 clip_step_error(const ClipEnd& a, const ClipEnd& b) {
     const double gap = std::fabs(a.distance - b.distance);
     const double slack = gap - a.distance_error - b.distance_error;

@@ -55,6 +55,20 @@ inline constexpr int kVertexRoundings = kRasterTransformRoundings + kOracleTrans
 // |P| |V| |M| |(p, 1)|: gamma_23 times them (the float camera's error comes on top, camera_precision.h).
 glm::dvec4 vertex_error(const glm::dvec4& magnitudes);
 
+// THE ORACLE'S OWN PLANE. The exact geometry is the oracle's double view transform V (M p): each view-space vertex
+// within gamma_8 in double (two chained 4-term products) of |V||M||p| of exact, so within delta in 2-norm, delta
+// that bound's length. Each edge e_i = v_i - v_0 is then off by at most 2 delta, and the normal e1 x e2 by at most
+// 2 delta (|e1| + |e2| + 2 delta); the ray-plane determinant dot(direction, normal), evaluated in double (gamma_4
+// of |e1| |e2| |direction| more), by |direction| times their sum: the PLANE NOISE. Where the determinant is within
+// it the double geometry cannot say where, or whether, the ray meets the plane (a triangle seen exactly end-on, or
+// one whose vertices are collinear, whose normal is rounding noise): it has no exact hit there. For any triangle
+// with an area it is a grazing angle of about 1e-14 rad.
+inline constexpr int kOracleDoubleViewRoundings = 8;
+constexpr double double_gamma(int roundings) { return roundings * 0x1p-53 / (1.0 - roundings * 0x1p-53); }
+// The plane noise per unit length of the direction, for edges e1, e2 and a largest vertex magnitude |V||M||p|
+// (2-norm of the componentwise bound).
+double plane_noise(const glm::dvec3& edge1, const glm::dvec3& edge2, double vertex_magnitude);
+
 // --- 3. Clipping ---------------------------------------------------------------------------------------------
 // raster's clipper makes each new vertex as a + t (b - a) with t = d_a / (d_a - d_b). In float that is the two
 // plane distances (2 roundings), their difference (1), the division (1), b - a (1), the product (1), the sum (1),

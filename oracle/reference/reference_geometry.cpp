@@ -165,21 +165,23 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
         const uint32_t first_vertex = geometry.mesh_first_vertex[triangle.mesh];
         std::vector<ClipVertex> polygon(3);
         glm::dvec3 view_vertex[3], oracle_error[3];
+        double vertex_magnitude = 0.0;  // the largest |V||M||p| (2-norm), for the plane noise
         for (int k = 0; k < 3; ++k) {
             const uint32_t vertex = triangle.vertex[k];
             const glm::dvec4 p{glm::dvec3(positions[vertex - first_vertex]), 1.0};
             view_vertex[k] = geometry.view[vertex];
-            oracle_error[k] = float_gamma(kOracleTransformRoundings) * glm::dvec3(view_magnitude_chain * glm::abs(p));
+            const glm::dvec3 view_magnitude_k = glm::dvec3(view_magnitude_chain * glm::abs(p));
+            vertex_magnitude = std::max(vertex_magnitude, glm::length(view_magnitude_k));
+            oracle_error[k] = float_gamma(kOracleTransformRoundings) * view_magnitude_k;
             polygon[k].clip = projection * glm::dvec4(view_vertex[k], 1.0);
             polygon[k].magnitudes = magnitude_chain * glm::abs(p);
             polygon[k].error = vertex_error(polygon[k].magnitudes) +
                                camera_clip_error(geometry.camera_error, camera_, geometry.world[vertex]);
             polygon[k].outgoing = EdgeKind::triangle;
         }
-        triangles_[id] = {view_vertex[0],
-                          view_vertex[1] - view_vertex[0],
-                          view_vertex[2] - view_vertex[0],
-                          {oracle_error[0], oracle_error[1], oracle_error[2]}};
+        const glm::dvec3 edge1 = view_vertex[1] - view_vertex[0], edge2 = view_vertex[2] - view_vertex[0];
+        triangles_[id] = {view_vertex[0], edge1, edge2, {oracle_error[0], oracle_error[1], oracle_error[2]},
+                          plane_noise(edge1, edge2, vertex_magnitude)};
         ReferencePolygon& out = polygons_[id];
         const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
         out.culled = scene.settings.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
@@ -226,7 +228,8 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
     const glm::dvec3 p = glm::cross(direction, tri.edge2);
     const double determinant = glm::dot(tri.edge1, p);
     ExactHit hit;
-    if (determinant == 0.0 || !std::isfinite(determinant)) return hit;
+    // Within the plane noise (precision.h) the double geometry cannot place the hit: none (NaN and inf included).
+    if (!(std::fabs(determinant) > tri.plane_noise * glm::length(direction)) || !std::isfinite(determinant)) return hit;
     const glm::dvec3 to_eye = -tri.a;
     const glm::dvec3 q = glm::cross(to_eye, tri.edge1);
     const double u = glm::dot(to_eye, p) / determinant;

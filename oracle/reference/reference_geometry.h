@@ -87,6 +87,7 @@ private:
     struct ViewTriangle {
         glm::dvec3 a, edge1, edge2;  // vertex 0 and the edges to vertices 1 and 2, view space
         glm::dvec3 oracle_error[3];  // how far the oracle's float view-space vertices can be from these
+        double plane_noise = 0;      // per unit of ray direction: a smaller determinant has no exact hit
     };
     // What Embree's evaluation bounds need for one triangle and one sample's ray.
     struct EmbreeRay {

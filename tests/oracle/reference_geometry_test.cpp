@@ -193,5 +193,35 @@ TEST(ReferenceGeometry, containsDecidesFromTheExactHitNotFromAClippedPolygonsRou
     EXPECT_EQ(raster.visibility.triangle[raster.visibility.index(9, 2, 0)], 0u);
 }
 
+// The differential fuzzer's scene: a triangle whose vertices lie on a line through the eye, seen exactly end-on. Its
+// double view-space normal is rounding noise, which made the exact hit land anywhere on the screen (and contains()
+// say yes far from the one ray that meets it). Within the plane noise there is no exact hit; a triangle facing the
+// same camera (wide enough for its 179.5-degree field of view) keeps its hits.
+TEST(ReferenceGeometry, aTriangleSeenEndOnHasNoExactHitWhereItsPlaneIsRoundingNoise) {
+    Camera camera;
+    camera.eye = glm::vec3(10.0f);
+    camera.target = glm::vec3(0.0f);
+    camera.up = glm::vec3(1.0f, -0.9375f, 1.0f);
+    camera.fov_y_degrees = 179.5f;
+    camera.near = 1e-6f;
+    camera.far = 1e9f;
+    const glm::vec3 on_the_line[3] = {{10, 10, 9.98046875f}, {10, 10, -6.71875f}, {10, 10, -10}};
+    const Scene end_on = scene_with_triangles({{on_the_line[0], on_the_line[1], on_the_line[2]}}, camera, 16, 16);
+    const ReferenceGeometry degenerate = reference_for(end_on);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            EXPECT_FALSE(degenerate.hit(0, {x + 0.5, y + 0.5}).valid) << "pixel " << x << ", " << y;
+            EXPECT_FALSE(degenerate.contains(0, {x + 0.5, y + 0.5})) << "pixel " << x << ", " << y;
+        }
+    const Scene facing =
+        scene_with_triangles({{glm::vec3(400, -200, -200), glm::vec3(-200, 400, -200), glm::vec3(-200, -200, 400)}},
+                             camera, 16, 16);
+    const ReferenceGeometry proper = reference_for(facing);
+    int hits = 0;
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) hits += proper.contains(0, {x + 0.5, y + 0.5});
+    EXPECT_GT(hits, 0);
+}
+
 }  // namespace
 }  // namespace raster::oracle
