@@ -73,7 +73,7 @@ std::string run_oracle_check(const std::string& check, const Implementation& imp
     static std::map<std::string, uint64_t> baselines;
     if (!baselines.count(scene)) baselines[scene] = genuine(scene, PipelineStages{}, RasterPath::tiled, 1);
     std::string reasons;
-    const uint64_t found = genuine(scene, impl.stages, impl.path, 1, &reasons);
+    const uint64_t found = genuine(scene, impl.stages, impl.backend.path, 1, &reasons);
     if (found <= baselines[scene]) return "";
     return std::to_string(found) + " genuine disagreements with the oracle (" + reasons + "); the real pipeline has " +
            std::to_string(baselines[scene]);
