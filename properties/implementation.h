@@ -1,13 +1,14 @@
-// The implementation a property checks: the pipeline's stages and the building blocks outside them, either the
-// real ones or a mutant's, and the rasterizer configuration (backend) that drawing properties run them on.
+// The implementation a property checks: the pipeline's stages and the building blocks outside them, and the
+// rasterizer configuration (backend) that drawing properties run them on. The stages and blocks are always the
+// real ones; a bug of the catalogue (mutants/bugs.txt) is planted into the source itself, never swapped in here.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "raster/pipeline/frame.h"
 #include "raster/pipeline/stages.h"
-#include "mutants/building_blocks.h"
-#include "mutants/catalogue.h"
+#include "properties/building_blocks.h"
 
 namespace raster::properties {
 
@@ -29,25 +30,16 @@ const Backend& production_backend();  // tiled, AVX2 where the CPU has it, hiera
 const Backend& reference_backend();   // the reference rasterizer, 1 thread
 
 struct Implementation {
-    std::string name;                // "real", or the mutant's bug name
+    std::string name;                // "real"
     PipelineStages stages;           // what render() runs
-    mutants::BuildingBlocks blocks;  // matrix builders and the loader's transform chain
+    BuildingBlocks blocks;  // matrix builders and the loader's transform chain
     Backend backend = production_backend();  // what drawing properties rasterize and render with
 };
 
 // The real rasterizer: the default stages and blocks, on the production backend.
 const Implementation& real_implementation();
 
-// The real rasterizer with one mutant's faulty stage or block, on the backend that runs it (the reference for a
-// mutant of reference_rasterize, else the production one).
-Implementation implementation_of(const mutants::Mutant& mutant);
-
 // The same implementation on another backend.
 Implementation on_backend(const Implementation& impl, const Backend& backend);
-
-// What the property gtests check: the real rasterizer, unless the environment variable RASTER_PROPERTY_MUTANT
-// names a bug of the catalogue, then that mutant (to watch a property catch it, shrink it and print the
-// counterexample and RapidCheck's reproduce string). Throws std::out_of_range for an unknown name.
-const Implementation& implementation_under_test();
 
 }  // namespace raster::properties

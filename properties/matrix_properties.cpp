@@ -61,7 +61,7 @@ double scale_ratio(const glm::vec3& s) {
     return std::max({a.x, a.y, a.z}) / std::min({a.x, a.y, a.z});
 }
 
-glm::mat4 model_of(const mutants::ScaleRotateTranslate& chain) {
+glm::mat4 model_of(const ScaleRotateTranslate& chain) {
     return translate_matrix(chain.offset) * rotate_matrix(chain.degrees, chain.axis) * scale_matrix(chain.scale);
 }
 

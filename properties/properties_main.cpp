@@ -15,15 +15,14 @@
 namespace raster::properties {
 namespace {
 
-// The gtest of one property: RapidCheck runs its check against implementation_under_test() (the real rasterizer
-// or RASTER_PROPERTY_MUTANT's bug) on one backend, exactly as an RC_GTEST_PROP body would (same ids, same
+// The gtest of one property: RapidCheck runs its check against the real rasterizer on one backend, exactly as an RC_GTEST_PROP body would (same ids, same
 // reproduce strings).
 class PropertyTest : public ::testing::Test {
 public:
     PropertyTest(void (*check)(const Implementation&), Backend backend) : check_(check), backend_(std::move(backend)) {}
 
     void TestBody() override {
-        const Implementation impl = on_backend(implementation_under_test(), backend_);
+        const Implementation impl = on_backend(real_implementation(), backend_);
         ::rc::detail::checkGTest([check = check_, &impl] { check(impl); });
     }
 
