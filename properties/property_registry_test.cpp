@@ -14,8 +14,9 @@
 namespace raster::properties {
 namespace {
 
-// RASTER_PROPERTIES_WRITTEN is the number of lines starting with RASTER_PROPERTY( in the property sources, counted
-// by properties/CMakeLists.txt at configure time: a property the linker dropped is missing here but not there.
+// RASTER_PROPERTIES_WRITTEN is the number of lines starting with RASTER_PROPERTY( or RASTER_DRAWING_PROPERTY( in the
+// property sources, counted by properties/CMakeLists.txt at configure time: a property the linker dropped is missing
+// here but not there.
 TEST(PropertyRegistry, holdsEveryPropertyTheSourcesWrite) {
     EXPECT_EQ(all_properties().size(), static_cast<size_t>(RASTER_PROPERTIES_WRITTEN));
 }
