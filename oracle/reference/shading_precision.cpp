@@ -12,8 +12,6 @@
 namespace raster::oracle {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // |a| x| |b|: the componentwise magnitude of cross(a, b), its two products added.
 glm::dvec3 cross_magnitude(const glm::dvec3& a, const glm::dvec3& b) {
     const glm::dvec3 x = glm::abs(a), y = glm::abs(b);
