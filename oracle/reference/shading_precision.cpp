@@ -2,7 +2,6 @@
 #include "oracle/reference/shading_precision.h"
 
 #include <cmath>
-#include <limits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
