@@ -1,6 +1,5 @@
 // Standalone main for builds without libFuzzer: feeds every file named (or found in a named folder) to the target.
 #include <algorithm>
-#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -9,12 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/replay_cpu_time.h"
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size);
 
 namespace {
-
-// Inputs slower than this are reported: the fuzzers treat a run over 1 s as a hang.
-constexpr double kSlowInputSeconds = 1.0;
 
 std::vector<std::filesystem::path> inputs_under(const std::filesystem::path& path) {
     std::vector<std::filesystem::path> inputs;
@@ -47,11 +45,12 @@ int main(int argc, char** argv) {
                 return 2;
             }
             std::fprintf(stderr, "replay: %s\n", input.c_str());
-            const auto start = std::chrono::steady_clock::now();
-            LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (seconds > kSlowInputSeconds) {
-                std::fprintf(stderr, "replay: SLOW %s took %.2f s (over %.1f s)\n", input.c_str(), seconds, kSlowInputSeconds);
+            // CPU time, not wall time: see replay_cpu_time.h.
+            const double seconds = raster::fuzz::cpu_seconds_of(
+                [&] { LLVMFuzzerTestOneInput(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()); });
+            if (seconds > raster::fuzz::kHangCpuSeconds) {
+                std::fprintf(stderr, "replay: SLOW %s took %.2f s of CPU time (over %.1f s)\n", input.c_str(), seconds,
+                             raster::fuzz::kHangCpuSeconds);
                 ++slow;
             }
             ++replayed;

@@ -53,7 +53,7 @@ RASTER_PROPERTY(Clip, triangleInsideTheFrustumIsUntouched) {
 // in [near, far] (view_volume_reference.h), except samples within the derived distance of a line where that
 // changes: half a sub-pixel unit diagonally (snapping) plus max(W, H) 2^-18 S / w_min pixels (the clipped
 // vertices' error e over their smallest w, doubled for x/w, in NDC halves).
-RASTER_PROPERTY(Clip, clipThenRasterizeCoversExactlyTheInFrustumSamplesOfTheUnclippedTriangle) {
+RASTER_DRAWING_PROPERTY(Clip, clipThenRasterizeCoversExactlyTheInFrustumSamplesOfTheUnclippedTriangle) {
     const ClipCase c = *clipped_triangles();
     RC_CLASSIFY(true, c.kind);
     check_clip_then_rasterize(impl, c);

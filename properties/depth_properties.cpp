@@ -1,6 +1,7 @@
 // Depth properties: reversed-Z float depth (the one depth mode raster has; conventions.h) is strictly monotone in
 // view distance over [near, far] (the projection's depth row), the z-buffer keeps the nearest surface (against an
-// exact nearest-surface reference), and without ties the image does not depend on draw order.
+// exact nearest-surface reference), without ties the image does not depend on draw order, and exact ties keep the
+// earlier triangle.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -49,7 +50,7 @@ RASTER_PROPERTY(Depth, isMonotoneInViewDistanceOverNearToFar) {
 // shows the triangle nearest along its ray, found exactly on the snapped triangles (1/w is affine in screen
 // space); samples where the two nearest depths are within the derived error of the compared depth
 // (depth_precision.h) are ties and may show either.
-RASTER_PROPERTY(Depth, zBufferKeepsTheNearestSurface) {
+RASTER_DRAWING_PROPERTY(Depth, zBufferKeepsTheNearestSurface) {
     const LayeredCase c = *overlapping_triangles();
     RC_CLASSIFY(true, c.kind);
     const Frame& frame = c.frame;
@@ -117,7 +118,7 @@ RASTER_PROPERTY(Depth, zBufferKeepsTheNearestSurface) {
 
 // Fronto-parallel triangles at distinct power-of-two depths (no two surfaces ever tie) drawn in two orders give the
 // same visibility buffer, bit for bit: the same triangle, barycentrics and depth at every sample.
-RASTER_PROPERTY(Depth, imageDoesNotDependOnDrawOrderWithoutTies) {
+RASTER_DRAWING_PROPERTY(Depth, imageDoesNotDependOnDrawOrderWithoutTies) {
     const LayeredCase c = *fronto_parallel_layers();
     RC_CLASSIFY(true, c.kind);
     const std::vector<ClipTriangle> triangles = project(impl, c);
@@ -136,6 +137,26 @@ RASTER_PROPERTY(Depth, imageDoesNotDependOnDrawOrderWithoutTies) {
         overlaps += a != kNoTriangle;
     }
     RC_CLASSIFY(overlaps == 0, "nothing visible");
+}
+
+// The same triangle drawn twice, then a copy through the same vertices in the other winding: every depth key ties,
+// and the documented rule (per_sample.h: "on an exact tie the earlier one stays") leaves each covered sample to
+// the first triangle drawn.
+RASTER_DRAWING_PROPERTY(Depth, exactTiesKeepTheEarlierTriangle) {
+    const ClipCase c = *perspective_triangles_inside();
+    RC_CLASSIFY(true, c.kind);
+    const ClipTriangle& t = c.triangle;
+    const ClipTriangle reversed{{t.v[0], t.v[2], t.v[1]}};
+    const VisibilityBuffer visibility = draw(impl, c.frame, {t, t, reversed});
+    int covered = 0;
+    for (size_t i = 0; i < visibility.size(); ++i) {
+        if (visibility.triangle[i] == kNoTriangle) continue;
+        ++covered;
+        if (visibility.triangle[i] != 0)
+            fail_case("sample " + std::to_string(i) + " shows triangle " + std::to_string(visibility.triangle[i]) +
+                      ", drawn after triangle 0 at exactly the same depth");
+    }
+    RC_CLASSIFY(covered == 0, "covers no sample");
 }
 
 }  // namespace raster::properties

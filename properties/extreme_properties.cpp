@@ -57,7 +57,7 @@ bool same_bits(float a, float b) { return a == b || (std::isnan(a) && std::isnan
 
 // Two fronto-parallel quads filling the view at view depths w1 < w2 anywhere in [1e-6, 1e9], w2 >= w1 (1 + 2^-19),
 // rendered in either order: every sample shows the nearer quad, at view depth w1 within 2^-22 relative.
-RASTER_PROPERTY(Extremes, nearOneMillionthAndFarOneBillionKeepTheNearerSurface) {
+RASTER_DRAWING_PROPERTY(Extremes, nearOneMillionthAndFarOneBillionKeepTheNearerSurface) {
     const DepthPairCase c = *depth_pairs_over_extreme_range();
     RC_CLASSIFY(true, c.kind);
     Scene scene = looking_down_negative_z(90.0f, 1e-6f, 1e9f, 1);
@@ -80,7 +80,7 @@ RASTER_PROPERTY(Extremes, nearOneMillionthAndFarOneBillionKeepTheNearerSurface) 
 
 // Vertices up to 2^20 px off screen: the clipped vertices satisfy the planes, and the drawn samples are exactly
 // the in-frustum samples of the unclipped triangle outside the derived margin (clip_checks.h).
-RASTER_PROPERTY(Extremes, verticesUpTo2To20PixelsOffScreenCoverTheirVisibleSamples) {
+RASTER_DRAWING_PROPERTY(Extremes, verticesUpTo2To20PixelsOffScreenCoverTheirVisibleSamples) {
     const ClipCase c = *triangles_far_off_screen();
     RC_CLASSIFY(true, c.kind);
     check_clipped_vertices(impl, c);
@@ -89,20 +89,20 @@ RASTER_PROPERTY(Extremes, verticesUpTo2To20PixelsOffScreenCoverTheirVisibleSampl
 
 // Two slivers of aspect ~1e6 sharing their long edge (16384 px long at 16 sub-pixel bits, the fixed-point limit,
 // or across a 32 px frame): exactly the reference's samples, and the shared edge's samples exactly once.
-RASTER_PROPERTY(Extremes, sliversOfAspectOneMillionAreWatertightAndExact) {
+RASTER_DRAWING_PROPERTY(Extremes, sliversOfAspectOneMillionAreWatertightAndExact) {
     check_tiling(impl, *sliver_pairs());
 }
 
 // Triangles smaller than one sub-pixel unit (1/256 px at 8 bits), a few units, or under one square pixel, all at
 // a sample: they cover exactly the reference's samples (often none, never a crash, and never dropped for being
 // small when their snapped form holds a sample).
-RASTER_PROPERTY(Extremes, trianglesSmallerThanASubPixelCoverExactlyTheReferenceSamples) {
+RASTER_DRAWING_PROPERTY(Extremes, trianglesSmallerThanASubPixelCoverExactlyTheReferenceSamples) {
     check_tiling(impl, *sub_pixel_triangles());
 }
 
 // One to three vertices exactly on the near plane (the rest inside): the triangle is not clipped, its near
 // vertices get depth 1 within depth_error_at_near, and it covers exactly the reference's samples.
-RASTER_PROPERTY(Extremes, verticesExactlyOnTheNearPlaneAreKeptWithDepthOne) {
+RASTER_DRAWING_PROPERTY(Extremes, verticesExactlyOnTheNearPlaneAreKeptWithDepthOne) {
     const LayeredCase c = *triangles_touching_the_near_plane();
     RC_CLASSIFY(true, c.kind);
     const Frame& frame = c.frame;
@@ -132,7 +132,7 @@ RASTER_PROPERTY(Extremes, verticesExactlyOnTheNearPlaneAreKeptWithDepthOne) {
 
 // A vertex at w = 0, +-1e-40 (denormal), +-1e-30 or +-near 1e-7: every clipped vertex has w >= near, and the
 // drawn samples are the in-frustum ones of the unclipped triangle outside the derived margin.
-RASTER_PROPERTY(Extremes, wNearZeroIsClippedBeforeAnyDivide) {
+RASTER_DRAWING_PROPERTY(Extremes, wNearZeroIsClippedBeforeAnyDivide) {
     const ClipCase c = *triangles_with_w_near_zero();
     RC_CLASSIFY(true, c.kind);
     check_every_clipped_w_is_at_least_near(impl, c);
@@ -141,7 +141,7 @@ RASTER_PROPERTY(Extremes, wNearZeroIsClippedBeforeAnyDivide) {
 
 // NaN or +-Inf in one to three clip coordinates: the clip stage returns nothing and no sample is covered; the same
 // number in a scene's vertex makes validate_scene throw InputError. (Run under UBSan: no undefined behaviour.)
-RASTER_PROPERTY(Extremes, nonFiniteCoordinatesAreRejectedCleanly) {
+RASTER_DRAWING_PROPERTY(Extremes, nonFiniteCoordinatesAreRejectedCleanly) {
     const ClipCase c = *triangles_with_non_finite_coordinates();
     RC_CLASSIFY(true, c.kind);
     const ClippedPolygon polygon = impl.stages.clip(c.triangle.v[0], c.triangle.v[1], c.triangle.v[2], c.frame.volume);
@@ -170,7 +170,7 @@ RASTER_PROPERTY(Extremes, nonFiniteCoordinatesAreRejectedCleanly) {
 // nothing overflows or goes subnormal (the generator's ranges are chosen for that, see
 // generators/scene_extremes.cpp). And a triangle at +-3e38, whose clip coordinates overflow to Inf and NaN,
 // changes nothing else and leaves every value in the visibility buffer finite.
-RASTER_PROPERTY(Extremes, sceneExtentsNearFloatLimitsRenderExactlyScaled) {
+RASTER_DRAWING_PROPERTY(Extremes, sceneExtentsNearFloatLimitsRenderExactlyScaled) {
     const ScaledSceneCase c = *scenes_scaled_towards_float_limits();
     RC_CLASSIFY(true, c.kind);
     auto scene_scaled_by = [&](int exponent) {

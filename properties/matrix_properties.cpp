@@ -61,7 +61,7 @@ double scale_ratio(const glm::vec3& s) {
     return std::max({a.x, a.y, a.z}) / std::min({a.x, a.y, a.z});
 }
 
-glm::mat4 model_of(const mutants::ScaleRotateTranslate& chain) {
+glm::mat4 model_of(const ScaleRotateTranslate& chain) {
     return translate_matrix(chain.offset) * rotate_matrix(chain.degrees, chain.axis) * scale_matrix(chain.scale);
 }
 
@@ -73,7 +73,8 @@ glm::mat4 model_of(const mutants::ScaleRotateTranslate& chain) {
 // |R^T R - I| <= e = 2^-21 (1 + 1 / sin theta) entry by entry and |det R - 1| <= 3e. The eye maps within
 // 2^-21 |eye|_1 of the origin (three-term float dot products against the double evaluation), and the target within
 // e |target - eye| + 2^-22 (|eye| + |target|) + 2^-21 |eye|_1 of (0, 0, -|target - eye|) (float subtraction of
-// eye and target turns the direction by 2^-23 (|eye| + |target|) / |target - eye|).
+// eye and target turns the direction by 2^-23 (|eye| + |target|) / |target - eye|). Up maps into the upper half of
+// the view's y-z plane.
 RASTER_PROPERTY(ViewMatrix, isRigidAndMapsEyeToOriginAndTargetOntoNegativeZ) {
     const CameraCase c = *cameras();
     RC_CLASSIFY(true, c.kind);
@@ -84,6 +85,14 @@ RASTER_PROPERTY(ViewMatrix, isRigidAndMapsEyeToOriginAndTargetOntoNegativeZ) {
     if (!(off <= e)) fail_case("R^T R is " + double_literal(off) + " from I (bound " + double_literal(e) + ")");
     const double det = glm::determinant(r);
     if (!(std::fabs(det - 1.0) <= 3.0 * e)) fail_case("det R = " + double_literal(det));
+    // Up stays up: it has no right component (u is up x w, normalised: within e |up|), and a non-negative y (its
+    // y is |up| sin(theta) exactly; a view turned half a turn about -z, with u and v both reversed, passes the
+    // checks above and the two below, but not this one).
+    const glm::dvec3 up_view = r * glm::dvec3(c.up);
+    const double up_bound = e * glm::length(glm::dvec3(c.up));
+    if (!(std::fabs(up_view.x) <= up_bound && up_view.y >= -up_bound))
+        fail_case("up maps to (" + double_literal(up_view.x) + ", " + double_literal(up_view.y) + ", " +
+                  double_literal(up_view.z) + "), not into the upper half of the view's y-z plane");
     const glm::dvec3 eye(c.eye), target(c.target);
     const glm::dvec3 eye_view(view * glm::dvec4(eye, 1.0));
     const double eye_bound = std::ldexp(norm1(eye), -21);

@@ -1,4 +1,4 @@
-// The registry RASTER_PROPERTY fills, and the one order every run lists the properties in.
+// The registry RASTER_PROPERTY and RASTER_DRAWING_PROPERTY fill, and the one order every run lists the properties in.
 #include "properties/property_registry.h"
 
 #include <algorithm>
@@ -32,9 +32,9 @@ size_t suite_rank(const std::string& suite) {
 
 }  // namespace
 
-bool register_property(const char* suite, const char* name, void (*check)(const Implementation&), const char* file,
-                       int line) {
-    registered().push_back({suite, name, check, file, line});
+bool register_property(const char* suite, const char* name, void (*check)(const Implementation&), bool draws,
+                       const char* file, int line) {
+    registered().push_back({suite, name, check, draws, file, line});
     return true;
 }
 

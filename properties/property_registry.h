@@ -13,14 +13,15 @@ struct Property {
     std::string suite;                     // the gtest suite, e.g. "Coverage"
     std::string name;                      // the gtest name, e.g. "sharedEdgeSamplesCoveredExactlyOnce"
     void (*check)(const Implementation&);  // draws its own cases with RapidCheck; fails through RC_ASSERT/fail_case
+    bool draws = false;                    // rasterizes (stage_driver.h), so it runs on every drawing backend
     std::string file;                      // where the property is written, for gtest's failure locations
     int line = 0;
 };
 
 // Adds a property to the registry; RASTER_PROPERTY calls it during static initialisation. Returns true so that
 // the call can initialise a namespace-scope constant.
-bool register_property(const char* suite, const char* name, void (*check)(const Implementation&), const char* file,
-                       int line);
+bool register_property(const char* suite, const char* name, void (*check)(const Implementation&), bool draws,
+                       const char* file, int line);
 
 // The registered properties in the README's order: by suite, in the order property_registry.cpp declares the
 // suites, then in the order they are written. Throws std::logic_error naming a suite that order does not list.
@@ -30,10 +31,14 @@ const std::vector<Property>& all_properties();
 
 // Defines the property Suite.Name and registers it: the braces that follow are its check, run against `impl`.
 // Write it in namespace raster::properties, in a source of the raster_property_checks object library (an object
-// library, so that the linker keeps every registration; properties/CMakeLists.txt).
-#define RASTER_PROPERTY(Suite, Name)                                                                       \
-    static void raster_property_##Suite##_##Name(const ::raster::properties::Implementation& impl);        \
-    [[maybe_unused]] static const bool raster_property_registered_##Suite##_##Name =                       \
-        ::raster::properties::register_property(#Suite, #Name, raster_property_##Suite##_##Name, __FILE__, \
-                                                __LINE__);                                                 \
+// library, so that the linker keeps every registration; properties/CMakeLists.txt). RASTER_PROPERTY is for a check
+// that never rasterizes; RASTER_DRAWING_PROPERTY for one that does (through stage_driver.h), which then runs once
+// per drawing backend (implementation.h), as the gtest Suite.Name/backend. The registry's test checks the choice.
+#define RASTER_PROPERTY_WITH(Suite, Name, Draws)                                                             \
+    static void raster_property_##Suite##_##Name(const ::raster::properties::Implementation& impl);          \
+    [[maybe_unused]] static const bool raster_property_registered_##Suite##_##Name =                         \
+        ::raster::properties::register_property(#Suite, #Name, raster_property_##Suite##_##Name, Draws,      \
+                                                __FILE__, __LINE__);                                         \
     static void raster_property_##Suite##_##Name(const ::raster::properties::Implementation& impl)
+#define RASTER_PROPERTY(Suite, Name) RASTER_PROPERTY_WITH(Suite, Name, false)
+#define RASTER_DRAWING_PROPERTY(Suite, Name) RASTER_PROPERTY_WITH(Suite, Name, true)

@@ -40,9 +40,13 @@ TEST(Regressions, fanAroundASampleReachingPastTheViewportStaysWatertight) {
                                   {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}},
                                   {},
                                   {0}}};
-    const std::vector<int> counts = coverage_counts(real_implementation(), c.frame, clip_triangles(c.frame, c.mesh));
-    for (size_t i = 0; i < counts.size(); ++i) EXPECT_LE(counts[i], 1) << "sample " << i;
-    EXPECT_EQ(counts[8 * 32 + 5], 1);  // pixel (5, 8): its centre is the shared vertex
+    for (const Backend& backend : drawing_backends()) {
+        SCOPED_TRACE(backend.name);
+        const Implementation impl = on_backend(real_implementation(), backend);
+        const std::vector<int> counts = coverage_counts(impl, c.frame, clip_triangles(c.frame, c.mesh));
+        for (size_t i = 0; i < counts.size(); ++i) EXPECT_LE(counts[i], 1) << "sample " << i;
+        EXPECT_EQ(counts[8 * 32 + 5], 1);  // pixel (5, 8): its centre is the shared vertex
+    }
 }
 
 // Found by Clip.clipThenRasterizeCoversExactlyTheInFrustumSamplesOfTheUnclippedTriangle (soak, 20000 cases): a
@@ -58,18 +62,23 @@ TEST(Regressions, triangleLyingInTheNearPlaneIsDrawnWhole) {
     const ClippedPolygon polygon = clip_triangle(c.triangle.v[0], c.triangle.v[1], c.triangle.v[2], c.frame.volume);
     EXPECT_EQ(polygon.count, 3);
     EXPECT_FALSE(polygon.clipped);
-    const VisibilityBuffer visibility = draw(real_implementation(), c.frame, {c.triangle});
-    const reference::Point a = snapped(c.frame, c.triangle.v[0]), b = snapped(c.frame, c.triangle.v[1]),
-                           d = snapped(c.frame, c.triangle.v[2]);
-    int covered = 0;
-    for (const Sample& s : samples_of(c.frame)) {
-        const bool expected = reference::reference_covers(a, b, d, s.fixed);
-        EXPECT_EQ(visibility.triangle[s.index] != kNoTriangle, expected) << "sample " << s.s << " of pixel (" << s.x << ", " << s.y << ")";
-        covered += expected;
+    for (const Backend& backend : drawing_backends()) {
+        SCOPED_TRACE(backend.name);
+        const Implementation impl = on_backend(real_implementation(), backend);
+        const VisibilityBuffer visibility = draw(impl, c.frame, {c.triangle});
+        const reference::Point a = snapped(c.frame, c.triangle.v[0]), b = snapped(c.frame, c.triangle.v[1]),
+                               d = snapped(c.frame, c.triangle.v[2]);
+        int covered = 0;
+        for (const Sample& s : samples_of(c.frame)) {
+            const bool expected = reference::reference_covers(a, b, d, s.fixed);
+            EXPECT_EQ(visibility.triangle[s.index] != kNoTriangle, expected)
+                << "sample " << s.s << " of pixel (" << s.x << ", " << s.y << ")";
+            covered += expected;
+        }
+        EXPECT_GT(covered, 0);
+        EXPECT_NE(visibility.triangle[visibility.index(0, 15, 6)], kNoTriangle);  // the sample reported
+        expect_check_passes([&] { check_clip_then_rasterize(impl, c); });
     }
-    EXPECT_GT(covered, 0);
-    EXPECT_NE(visibility.triangle[visibility.index(0, 15, 6)], kNoTriangle);  // the sample reported
-    expect_check_passes([&] { check_clip_then_rasterize(real_implementation(), c); });
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
-// Running stages on hand-made frames and triangles, always on one thread so results are reproducible.
+// Running stages on hand-made frames and triangles, rasterized on the implementation's backend (its thread count
+// is fixed, and every backend gives the same bytes for any thread count, so results are reproducible).
 #include "properties/stage_driver.h"
 
 #include <bit>
+
+#include "raster/pipeline/tiled_renderer.h"
 
 #include "properties/reference/documented_samples.h"
 #include "properties/printing.h"
@@ -81,13 +84,22 @@ std::vector<TriangleSetup> set_up(const Implementation& impl, const Frame& frame
     return setups;
 }
 
+namespace {
+thread_local size_t rasterizer_run_count = 0;
+}  // namespace
+
+size_t rasterizer_runs() { return rasterizer_run_count; }
+
 VisibilityBuffer rasterize_setups(const Implementation& impl, const Frame& frame,
                                   const std::vector<TriangleSetup>& setups) {
     FrameParams params =
         frame_params(frame.width, frame.height, frame.snap_bits, impl.stages.sample_offsets(frame.samples, frame.pattern));
-    params.threads = 1;
+    params.threads = impl.backend.threads;
+    params.hierarchical_z = impl.backend.hierarchical_z;
+    ++rasterizer_run_count;
     VisibilityBuffer visibility;
-    impl.stages.reference_rasterize(setups, params, visibility);
+    if (impl.backend.path == RasterPath::reference) impl.stages.reference_rasterize(setups, params, visibility);
+    else rasterize_tiled(setups, params, impl.backend.allow_simd, visibility);
     return visibility;
 }
 
@@ -108,9 +120,14 @@ std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
 
 RenderResult render_with(const Implementation& impl, const Scene& scene) {
     RenderOptions options;
-    options.threads = 1;
-    options.path = impl.path;
-    return render(scene, options, impl.stages);
+    options.threads = impl.backend.threads;
+    options.path = impl.backend.path;
+    options.allow_simd = impl.backend.allow_simd;
+    ++rasterizer_run_count;
+    if (scene.settings.modes.hierarchical_z == impl.backend.hierarchical_z) return render(scene, options, impl.stages);
+    Scene configured = scene;
+    configured.settings.modes.hierarchical_z = impl.backend.hierarchical_z;
+    return render(configured, options, impl.stages);
 }
 
 }  // namespace raster::properties

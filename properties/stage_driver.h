@@ -73,7 +73,8 @@ reference::Point snapped(const Frame& frame, const glm::vec4& clip);
 std::vector<TriangleSetup> set_up(const Implementation& impl, const Frame& frame,
                                   const std::vector<ClipTriangle>& triangles);
 
-// Rasterizes setups with the implementation's rasterizer and sample positions, on one thread.
+// Rasterizes setups with the implementation's sample positions on its backend: the reference_rasterize stage, or
+// the tiled renderer's rasterize_tiled with the backend's SIMD, hierarchical Z and thread count.
 VisibilityBuffer rasterize_setups(const Implementation& impl, const Frame& frame,
                                   const std::vector<TriangleSetup>& setups);
 
@@ -84,7 +85,11 @@ VisibilityBuffer draw(const Implementation& impl, const Frame& frame, const std:
 std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
                                  const std::vector<ClipTriangle>& triangles);
 
-// render() with the implementation's stages, on one thread.
+// render() with the implementation's stages on its backend (renderer, SIMD, hierarchical Z, threads).
 RenderResult render_with(const Implementation& impl, const Scene& scene);
+
+// How many times this thread has rasterized through rasterize_setups or render_with: the registry's test uses it
+// to check that exactly the properties registered as drawing ones draw.
+size_t rasterizer_runs();
 
 }  // namespace raster::properties

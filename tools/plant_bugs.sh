@@ -1,32 +1,42 @@
 #!/usr/bin/env bash
-# plant_bugs.sh: writes each bug of mutants/planted/bugs.txt into a scratch copy of raster's source, rebuilds the
-# real `raster` and requires `raster compare` to find genuine disagreements that the correct build does not find.
+# plant_bugs.sh: the bug catalogue's run. Writes each bug of mutants/bugs.txt into a scratch copy of raster's
+# source, rebuilds, and runs every check against it: the oracle (`raster compare`), every property and the fuzz
+# invariants (the raster and differential targets over their corpora). Prints the bug x check matrix.
 set -euo pipefail
 
 usage() {
   cat <<'EOF'
 usage: tools/plant_bugs.sh [--list] [--only NAME]... [--catalogue FILE] [--keep] [--jobs N] [--help]
 
-Copies the tracked source tree (git ls-files) into a scratch folder, builds `raster` there (Release, tests, bench
-and fuzzers off) and runs the correct `raster compare SCENE FLAGS` of every selected entry (each must exit 0).
-Then, one bug at a time: checks that the entry's find text occurs exactly once in its file, applies the
-replacement, rebuilds `raster` incrementally, runs `raster compare SCENE FLAGS --json`, requires exit 1 with
-genuine_total > 0, and restores the file. The worktree itself is never modified.
+Copies the tracked source tree (git ls-files) into a scratch folder and builds there (Release, benchmarks off) the
+targets the checks run: `raster`, the property tests and the raster and differential fuzz targets' corpus
+replayers. The correct build must pass every check: `raster compare SCENE FLAGS` of every selected entry exits 0,
+every property passes (RC_PARAMS="max_success=100 seed=1" unless RASTER_PLANT_RC_PARAMS says otherwise) and both
+replayers pass their corpora and regressions. Then, one bug at a time: checks that the entry's find text occurs
+exactly once in its file, applies the replacement, rebuilds incrementally, runs every check, and restores the file.
+The worktree itself is never modified.
 
-Progress goes to stderr; stdout gets a Markdown table (bug, scene and flags, genuine count, the classes that
-caught it). For a bug compare misses, the runner renders the scene with both builds and says whether raster's
-PNG and PPM bytes changed at all.
+The checks, each a column of the matrix:
+  oracle        `raster compare SCENE FLAGS --json` exits 1 with genuine_total > 0         (reads pixels)
+  P:Suite.Name  the property fails on some backend (Suite.Name/BACKEND for a drawing one)  (a drawing property
+                reads the samples it drew; the others check matrices, clipped vertices or tables: no pixel)
+  fuzz:raster, fuzz:differential   the replayer fails an input of its corpus or regressions (reads pixels)
+
+Progress goes to stderr; stdout gets the matrix, as a Markdown table (bug, family, scene and flags, genuine count
+and classes, the properties and fuzz invariants that caught it) and then the catches of each check. For a bug
+compare misses, the runner renders the scene with both builds and says whether raster's PNG and PPM bytes changed.
 
   --list            print the catalogue's entries (name: bug) and exit
   --only NAME       run only this entry (repeatable)
-  --catalogue FILE  the catalogue to run (default mutants/planted/bugs.txt)
+  --catalogue FILE  the catalogue to run (default mutants/bugs.txt)
   --keep            keep the scratch folder (its path is printed): src/ (restored), build/ (its raster is the last
                     bug's), raster-correct, runs/NAME.json and .txt (compare's output), logs/ (configure, builds)
   --jobs N          build jobs (default 2)
   --help            this text
 
-Exit codes: 0 every bug caught and every correct run clean; 1 a bug not caught or a correct run not clean (both
-named); 2 bad usage, a stale or malformed entry, or a build that fails.
+Exit codes: 0 every bug caught by a check that reads pixels, every check (with --only: not required) catching a
+bug, and the correct build clean; 1 otherwise (each failure named); 2 bad usage, a stale or malformed entry, or a
+build that fails.
 EOF
 }
 
@@ -34,7 +44,7 @@ die_usage() { echo "plant_bugs: $*" >&2; echo "run tools/plant_bugs.sh --help fo
 die() { echo "plant_bugs: $*" >&2; exit 2; }
 
 root=$(cd "$(dirname "$0")/.." && pwd)
-catalogue=$root/mutants/planted/bugs.txt
+catalogue=$root/mutants/bugs.txt
 only=()
 keep=0 list=0 jobs=2
 while (($#)); do
@@ -53,7 +63,7 @@ done
 
 # --- The catalogue ---
 
-keys=(bug file find replace scene flags)
+keys=(bug family file find replace scene flags)
 names=()
 declare -A entry=()  # entry[NAME.KEY] = value (find and replace unescaped)
 declare -A entry_line=()  # entry_line[NAME] = the line of its [NAME] header
@@ -156,11 +166,23 @@ if ((${#only[@]})); then
 else
   selected=("${names[@]}")
 fi
+# The run order: bugs of one file together (restoring one and planting the next then costs one rebuild of what
+# includes that file, not two), sources before headers (a header rebuilds everything that includes it), each
+# file's bugs in catalogue order.
+order_by_file() {
+  local name
+  for name in "$@"; do
+    local file=${entry[$name.file]} kind=0
+    [[ $file == *.h ]] && kind=1
+    printf '%s\t%s\t%s\n' "$kind" "$file" "$name"
+  done | sort -s -t $'\t' -k1,1n -k2,2 | cut -f3
+}
 
 if ((list)); then
   for name in "${selected[@]}"; do echo "$name: ${entry[$name.bug]}"; done
   exit 0
 fi
+mapfile -t selected < <(order_by_file "${selected[@]}")
 
 # Every entry is checked against the worktree before anything is built, so a stale catalogue fails in seconds.
 for name in "${selected[@]}"; do check_fresh "$name" "$root"; done
@@ -183,23 +205,71 @@ start=$(date +%s)
 (cd "$root" && git ls-files -z | while IFS= read -r -d '' tracked; do [[ -e $tracked ]] && printf '%s\0' "$tracked"; done |
   tar --null -T - -cf -) | tar -xf - -C "$src"
 
-# build LOG: builds the raster target incrementally in $build; prints its seconds; returns the build's status.
+targets=(raster raster_properties_test raster_fuzzer differential_fuzzer)
+properties_binary=properties/raster_properties_test
+rc_params=${RASTER_PLANT_RC_PARAMS:-max_success=100 seed=1}
+
+# build LOG: builds the checks' targets incrementally in $build; prints its seconds; returns the build's status.
 build() {
   local log=$1 begin rc=0
   begin=$(date +%s)
-  cmake --build "$build" -j "$jobs" --target raster >"$log" 2>&1 || rc=$?
+  cmake --build "$build" -j "$jobs" --target "${targets[@]}" >"$log" 2>&1 || rc=$?
   echo $(($(date +%s) - begin))
   return "$rc"
 }
 
-echo "plant_bugs: building the correct raster in $build" >&2
-cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRASTER_BUILD_TESTS=OFF -DRASTER_BUILD_BENCH=OFF \
-  -DRASTER_BUILD_FUZZERS=OFF >"$logs/configure.log" 2>&1 ||
+# With ccache (Debian's ccache, which .ci/install installs), restoring a planted header is a cache hit: each header
+# bug then costs one rebuild of what includes it instead of two. Its cache lives and dies with the scratch folder.
+launcher=()
+if command -v ccache >/dev/null 2>&1; then
+  export CCACHE_DIR=$scratch/ccache CCACHE_MAXSIZE=4G
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+echo "plant_bugs: building the correct raster, properties and fuzz replayers in $build${launcher[*]:+ (ccache)}" >&2
+cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRASTER_BUILD_TESTS=ON -DRASTER_BUILD_BENCH=OFF \
+  -DRASTER_BUILD_FUZZERS=ON "${launcher[@]}" >"$logs/configure.log" 2>&1 ||
   { tail -n 30 "$logs/configure.log" >&2; die "configuring the scratch copy failed (log above)"; }
 seconds=$(build "$logs/build-correct.log") ||
-  { tail -n 30 "$logs/build-correct.log" >&2; die "the correct raster does not build (log above)"; }
+  { tail -n 30 "$logs/build-correct.log" >&2; die "the correct build fails (log above)"; }
+[[ -x $build/$properties_binary ]] || die "the scratch build has no $properties_binary"
+[[ -x $build/fuzz/raster_fuzzer && -x $build/fuzz/differential_fuzzer ]] ||
+  die "the scratch build has no fuzz replayers (is clang-14's FuzzedDataProvider.h installed?)"
 cp "$build/raster" "$scratch/raster-correct"
-echo "plant_bugs: correct raster built in $seconds s" >&2
+echo "plant_bugs: correct build done in $seconds s" >&2
+
+# --- Properties and fuzz invariants ---
+
+# run_properties LABEL: every property on every backend; sets failed_properties (Suite.Name, backends folded,
+# sorted) and failed_drawing (the ones that drew). A crash counts as a failure of the property that was running.
+# The correct build's run must pass everything, the registry's tests and the regression cases included.
+run_properties() {
+  local log=$runs/$1.properties.txt
+  (cd "$src" && RC_PARAMS=$rc_params timeout 1200 "$build/$properties_binary" --gtest_color=no; exit $?) >"$log" 2>&1 || true
+  local failed running
+  failed=$(sed -n -E 's/^\[  FAILED  \] ([A-Za-z0-9_]+\.[A-Za-z0-9_]+(\/[a-z0-9_]+)?)( \(.*)?$/\1/p' "$log" | sort -u)
+  running=$(awk '/^\[ RUN      \]/ { t = $4 } /^\[       OK \]|^\[  FAILED  \]/ { t = "" } END { print t }' "$log")
+  # The registry's own tests and the fixed regression cases are not properties: they are not columns.
+  failed=$(printf '%s\n%s\n' "$failed" "$running" | sed '/^$/d' | grep -v '^PropertyRegistry\.\|^Regressions\.' |
+    sort -u || true)
+  failed_properties=$(sed -E 's#/.*##' <<<"$failed" | sed '/^$/d' | sort -u | tr '\n' ' ')
+  failed_drawing=$(grep '/' <<<"$failed" | sed -E 's#/.*##' | sort -u | tr '\n' ' ' || true)
+  failed_properties=${failed_properties% } failed_drawing=${failed_drawing% }
+}
+
+# run_fuzz LABEL: each replayer over its corpus and regressions; sets failed_fuzz (fuzz:raster, fuzz:differential).
+run_fuzz() {
+  local name inputs=() log
+  failed_fuzz=""
+  for name in raster differential; do
+    inputs=("$src/corpus/fuzz/$name")
+    [[ -d $src/corpus/regressions/$name ]] && inputs+=("$src/corpus/regressions/$name")
+    log=$runs/$1.fuzz-$name.txt
+    # A failed check traps; the subshell's own "Illegal instruction" note goes to the log with the rest (the trailing
+    # exit keeps bash from exec-ing the last command, which would leave the note to this script's stderr).
+    (cd "$src" && timeout 600 "$build/fuzz/${name}_fuzzer" -runs=0 "${inputs[@]}"; exit $?) >"$log" 2>&1 ||
+      failed_fuzz+=${failed_fuzz:+ }fuzz:$name
+  done
+}
 
 # --- Running compare ---
 
@@ -266,6 +336,25 @@ for name in "${selected[@]}"; do
   fi
 done
 
+# The correct build on the properties and fuzz invariants: both must pass, or their catches mean nothing.
+run_properties correct
+run_fuzz correct
+grep -q '^\[  PASSED  \]' "$runs/correct.properties.txt" && ! grep -q '^\[  FAILED  \]' "$runs/correct.properties.txt" ||
+  failed_properties=${failed_properties:-"(see the log)"}
+[[ -z $failed_properties ]] || { echo "plant_bugs: the CORRECT build fails properties: $failed_properties" \
+  "(see $runs/correct.properties.txt)" >&2; unclean+=("properties: $failed_properties"); }
+[[ -z $failed_fuzz ]] || { echo "plant_bugs: the CORRECT build fails $failed_fuzz (see $runs/correct.fuzz-*.txt)" >&2
+  unclean+=("$failed_fuzz"); }
+((${#unclean[@]})) || echo "plant_bugs: correct build passes every property and fuzz invariant" >&2
+# Every property is a column, caught or not: the names come from the correct run's list of tests.
+all_properties=$(sed -n -E 's/^\[ RUN      \] ([A-Za-z0-9_]+\.[A-Za-z0-9_]+).*$/\1/p' "$runs/correct.properties.txt" |
+  grep -v '^PropertyRegistry\.\|^Regressions\.' | sort -u)
+declare -A drawing=()
+while read -r test; do drawing[$test]=1; done < <(sed -n -E 's#^\[ RUN      \] ([A-Za-z0-9_]+\.[A-Za-z0-9_]+)/.*$#\1#p' \
+  "$runs/correct.properties.txt" | sort -u)
+declare -A catches=()
+for check in oracle $all_properties fuzz:raster fuzz:differential; do catches[$check]=0; done
+
 # --- The bugs ---
 
 rows=()
@@ -285,33 +374,64 @@ for name in "${selected[@]}"; do
     echo "plant_bugs: [$index/${#selected[@]}] $name: the planted source does not build; see $logs/build-$name.log:" >&2
     grep -m 5 -E 'error' "$logs/build-$name.log" >&2 || true
     broken+=("$name")
-    rows+=("| $name | $(describe "$name") | - | does not build |")
+    rows+=("| $name | ${entry[$name.family]} | $(describe "$name") | does not build | - | - |")
   else
-    compare_start=$(date +%s)
+    check_start=$(date +%s)
     run_compare "$build/raster" "$name" "${entry[$name.scene]}" "${entry[$name.flags]}"
-    compare_seconds=$(($(date +%s) - compare_start))
+    run_properties "$name"
+    run_fuzz "$name"
+    check_seconds=$(($(date +%s) - check_start))
+    oracle_caught=0 by=()
     if [[ $rc -eq 1 && ${genuine_total:-0} -gt 0 ]]; then
-      outcome="caught: genuine $genuine_total ($caught_by)"
-      rows+=("| $name | $(describe "$name") | $genuine_total | $caught_by |")
+      oracle_caught=1
+      oracle_cell="$genuine_total ($caught_by)"
+      catches[oracle]=$((catches[oracle] + 1))
     else
-      output=$(same_output "${entry[$name.scene]}" "${entry[$name.flags]}")
-      outcome="NOT CAUGHT: compare exit $rc, genuine ${genuine_total:-none}; raster's output: $output"
-      missed+=("$name")
-      rows+=("| $name | $(describe "$name") | ${genuine_total:-none} | NOT CAUGHT (exit $rc; $output) |")
+      oracle_cell="missed (exit $rc; $(same_output "${entry[$name.scene]}" "${entry[$name.flags]}"))"
     fi
-    echo "plant_bugs: [$index/${#selected[@]}] $name: build $seconds s, compare $compare_seconds s: $outcome" >&2
+    for check in $failed_properties $failed_fuzz; do
+      [[ -n ${catches[$check]+set} ]] || catches[$check]=0
+      catches[$check]=$((catches[$check] + 1))
+    done
+    # What reads pixels: the oracle, a drawing property, a fuzz invariant.
+    pixel_catches=$((oracle_caught + $(wc -w <<<"$failed_drawing $failed_fuzz")))
+    others=$(( $(wc -w <<<"$failed_properties") - $(wc -w <<<"$failed_drawing") ))
+    summary="oracle $([[ $oracle_caught == 1 ]] && echo "$genuine_total" || echo missed), $(wc -w <<<"$failed_properties") properties ($others reading no pixel), ${failed_fuzz:-no fuzz invariant}"
+    if ((pixel_catches == 0)); then
+      missed+=("$name")
+      outcome="NOT CAUGHT by a check that reads pixels: $summary"
+    else
+      outcome="caught: $summary"
+    fi
+    rows+=("| $name | ${entry[$name.family]} | $(describe "$name") | $oracle_cell | ${failed_properties:-none} | ${failed_fuzz:-none} |")
+    echo "plant_bugs: [$index/${#selected[@]}] $name: build $seconds s, checks $check_seconds s: $outcome" >&2
   fi
   printf '%s' "$original" >"$file"  # a fresh mtime, so the next build recompiles it from the real source
 done
 
-echo "| bug | scene and flags | genuine | caught by |"
-echo "|---|---|---|---|"
+echo "| bug | family | scene and flags | oracle: genuine (classes) | properties that fail | fuzz invariants |"
+echo "|---|---|---|---|---|---|"
 printf '%s\n' "${rows[@]}"
+echo
+echo "| check | reads pixels | bugs caught |"
+echo "|---|---|---:|"
+idle=()
+for check in oracle $all_properties fuzz:raster fuzz:differential; do
+  pixels=no
+  [[ $check == oracle || $check == fuzz:* || -n ${drawing[$check]:-} ]] && pixels=yes
+  echo "| $check | $pixels | ${catches[$check]} |"
+  ((catches[$check] > 0)) || idle+=("$check")
+done
 
-echo "plant_bugs: ${#selected[@]} planted, $((${#selected[@]} - ${#missed[@]} - ${#broken[@]})) caught," \
-     "${#correct_rc[@]} correct runs, ${#unclean[@]} not clean, in $(($(date +%s) - start)) s" >&2
+echo "plant_bugs: ${#selected[@]} planted, $((${#selected[@]} - ${#missed[@]} - ${#broken[@]})) caught by a check" \
+     "that reads pixels, ${#correct_rc[@]} correct compares, ${#unclean[@]} unclean, in $(($(date +%s) - start)) s" >&2
 status=0
 if ((${#missed[@]})); then echo "plant_bugs: NOT CAUGHT: ${missed[*]}" >&2; status=1; fi
-if ((${#unclean[@]})); then printf 'plant_bugs: correct raster not clean on: %s\n' "${unclean[@]}" >&2; status=1; fi
+if ((${#unclean[@]})); then printf 'plant_bugs: correct build not clean: %s\n' "${unclean[@]}" >&2; status=1; fi
+# A check that catches none of the bugs proves nothing; with --only the selection is too small to say.
+if ((${#idle[@]} && ${#only[@]} == 0)); then
+  echo "plant_bugs: checks that catch no bug: ${idle[*]}" >&2
+  status=1
+fi
 ((${#broken[@]} == 0)) || die "entries whose planted source does not build: ${broken[*]}"
 exit "$status"

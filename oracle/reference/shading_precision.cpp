@@ -2,7 +2,6 @@
 #include "oracle/reference/shading_precision.h"
 
 #include <cmath>
-#include <limits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -11,8 +10,6 @@
 
 namespace raster::oracle {
 namespace {
-
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // |a| x| |b|: the componentwise magnitude of cross(a, b), its two products added.
 glm::dvec3 cross_magnitude(const glm::dvec3& a, const glm::dvec3& b) {

@@ -52,6 +52,12 @@ Gen<Frame> coverage_frames() {
          })},
         {1, gen::exec([] { return frame_of(32, 32, *sample_choices(), *uniform(1, 4)); })},
         {1, gen::exec([] { return frame_of(32, 32, *sample_choices(), *gen::element(12, 16)); })},
+        // Four 64-pixel tiles of the tiled renderer, so that triangles cross tile edges.
+        {1, gen::exec([] {
+             const SampleChoice choice = *gen::element(SampleChoice{1, SamplePattern::standard},
+                                                       SampleChoice{4, SamplePattern::standard});
+             return frame_of(128, 128, choice, kDefaultSnapBits);
+         })},
         {1, gen::exec([] {
              const int snap = *gen::element(8, 16);
              const SampleChoice choice = *gen::element(SampleChoice{1, SamplePattern::standard},

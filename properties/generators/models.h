@@ -9,13 +9,13 @@
 #include <glm/vec3.hpp>
 #include <rapidcheck.h>
 
-#include "mutants/building_blocks.h"
+#include "properties/building_blocks.h"
 
 namespace raster::properties {
 
 struct ModelCase {
     std::string kind;
-    mutants::ScaleRotateTranslate chain;
+    ScaleRotateTranslate chain;
     std::array<glm::vec3, 3> triangle;  // object space
 };
 std::ostream& operator<<(std::ostream& os, const ModelCase& c);

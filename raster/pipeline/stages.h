@@ -1,5 +1,5 @@
-// The rasterizer's stage seams: each stage as a replaceable function, so tests can run the real pipeline with
-// one faulty stage (the bug catalogue's mutants) without any switch in production code.
+// The rasterizer's stages as one struct of functions, so the properties can drive each stage on its own hand-made
+// input (properties/stage_driver.h) with exactly the functions render() runs.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +18,7 @@
 
 namespace raster {
 
-// The stages render() runs, defaulting to the real ones. A test replaces one to see which checks notice.
+// The stages render() runs: the real ones.
 struct PipelineStages {
     TransformedScene (*vertex)(const Scene&, const VertexStageNeeds&) = run_vertex_stage;  // camera matrices
     bool (*faces_front)(const glm::vec4&, const glm::vec4&, const glm::vec4&) = raster::faces_front;  // culling

@@ -182,26 +182,27 @@ void rasterize_in_tile_portable(const TileJob& job, uint32_t index, int tile_x, 
 }
 
 // Shades the tile's pixels into the image and, when kept, writes its samples into the visibility buffer.
-size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver& resolver, bool msaa,
-                    TileScratch& scratch, Image& image, VisibilityBuffer* visibility) {
+// Without a resolver (rasterize_tiled) it only writes the visibility buffer.
+size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver* resolver, bool msaa,
+                    TileScratch& scratch, Image* image, VisibilityBuffer* visibility) {
     const int S = job.samples, F = job.fixed_bits;
     const int x1 = std::min(job.width, tile_x + kTileSize), y1 = std::min(job.height, tile_y + kTileSize);
     size_t covered = 0;
     for (int py = tile_y; py < y1; ++py) {
         for (int px = tile_x; px < x1; ++px) {
             const size_t first = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * S;
-            if (!visibility) {  // the common pixels, answered without per-sample bookkeeping
+            if (resolver && !visibility) {  // the common pixels, answered without per-sample bookkeeping
                 const uint32_t winner = scratch.winner[first];
                 const bool uniform = is_uniform(&scratch.winner[first], S);
                 if (uniform && winner == kNoTriangle) {
-                    resolver.background(image.at(px, py));
+                    resolver->background(image->at(px, py));
                     continue;
                 }
-                if (uniform && resolver.shades_uniform_pixels_once()) {
+                if (uniform && resolver->shades_uniform_pixels_once()) {
                     const TriangleSetup& t = job.setups[winner];
                     const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[0],
                                                                   (int64_t{py} << F) + job.offsets.y[0]);
-                    resolver.one_triangle(t.triangle_id, hit.bary, image.at(px, py));
+                    resolver->one_triangle(t.triangle_id, hit.bary, image->at(px, py));
                     covered += static_cast<size_t>(S);
                     continue;
                 }
@@ -225,11 +226,63 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                 scratch.pixel_bary[s] = hit.bary;
                 if (visibility) store_sample(*visibility, visibility->index(px, py, s), t.triangle_id, hit);
             }
-            resolver.resolve(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image.at(px, py));
+            if (resolver) resolver->resolve(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image->at(px, py));
         }
     }
     return covered;
 }
+
+// Thread time spent in each half of the interleaved per-tile work.
+struct TileTimes {
+    std::atomic<int64_t> raster_ns{0}, shade_ns{0};
+};
+
+int64_t nanoseconds_between(Clock::time_point from, Clock::time_point to) {
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(to - from).count();
+}
+
+// The tile loop both entry points share: every tile, in parallel, gets its scratch planes reset and its binned
+// setups rasterized in draw order, then finish(tile_x, tile_y, scratch) reads the planes out. A tile without
+// setups gets empty(tile_x, tile_y) instead when skip_empty_tiles is set (its planes are already clear).
+template <class Finish, class Empty>
+void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, bool use_avx2, bool skip_empty_tiles,
+                         TileTimes& times, Finish&& finish, Empty&& empty) {
+    const int samples = job.samples;
+    parallel_for(bins.setups.size(), threads, [&](size_t tile) {
+        const auto tile_start = Clock::now();
+        thread_local TileScratch scratch;
+        const size_t plane = static_cast<size_t>(kTileSize) * kTileSize * samples;
+        scratch.depth.resize(plane);
+        // An empty tile needs its planes cleared only once per thread; a tile that had triangles clears them.
+        if (scratch.winner.size() != plane) scratch.winner.assign(plane, kNoTriangle);
+        for (auto& offset : scratch.row_offset) offset.resize(static_cast<size_t>(kBlockSize) * samples);
+        scratch.row_covered.resize(static_cast<size_t>(kBlockSize) * samples);
+        scratch.pixel_triangle.resize(static_cast<size_t>(samples));
+        scratch.pixel_bary.resize(static_cast<size_t>(samples));
+        const int tile_x = static_cast<int>(tile % bins.tiles_x) * kTileSize;
+        const int tile_y = static_cast<int>(tile / bins.tiles_x) * kTileSize;
+        scratch.block_far.fill(kNoBound);
+        scratch.block_filled.fill(0);
+        scratch.hidden_blocks = 0;
+        if (bins.setups[tile].empty() && skip_empty_tiles) {
+            empty(tile_x, tile_y);
+            times.shade_ns += nanoseconds_between(tile_start, Clock::now());
+            return;
+        }
+        for (uint32_t index : bins.setups[tile]) {
+            if (use_avx2) rasterize_in_tile_avx2(job, index, tile_x, tile_y, scratch);
+            else rasterize_in_tile_portable(job, index, tile_x, tile_y, scratch);
+        }
+        const auto finish_start = Clock::now();
+        finish(tile_x, tile_y, scratch);
+        if (!bins.setups[tile].empty()) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
+        const auto tile_end = Clock::now();
+        times.raster_ns += nanoseconds_between(tile_start, finish_start);
+        times.shade_ns += nanoseconds_between(finish_start, tile_end);
+    });
+}
+
+bool avx2_allowed(bool allow_simd) { return allow_simd && __builtin_cpu_supports("avx2"); }
 
 }  // namespace
 
@@ -261,53 +314,47 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
     }
     const TileJob job{setups, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
     std::atomic<size_t> covered{0}, hidden{0};
-    std::atomic<int64_t> raster_ns{0}, shade_ns{0};  // thread time in each half of the interleaved work
-    const bool use_avx2 = options.allow_simd && __builtin_cpu_supports("avx2");
-    parallel_for(bins.setups.size(), options.threads, [&](size_t tile) {
-        const auto tile_start = Clock::now();
-        thread_local TileScratch scratch;
-        const size_t plane = static_cast<size_t>(kTileSize) * kTileSize * samples;
-        scratch.depth.resize(plane);
-        // An empty tile needs its planes cleared only once per thread; a tile that had triangles clears them.
-        if (scratch.winner.size() != plane) scratch.winner.assign(plane, kNoTriangle);
-        for (auto& offset : scratch.row_offset) offset.resize(static_cast<size_t>(kBlockSize) * samples);
-        scratch.row_covered.resize(static_cast<size_t>(kBlockSize) * samples);
-        scratch.pixel_triangle.resize(static_cast<size_t>(samples));
-        scratch.pixel_bary.resize(static_cast<size_t>(samples));
-        const int tile_x = static_cast<int>(tile % bins.tiles_x) * kTileSize;
-        const int tile_y = static_cast<int>(tile / bins.tiles_x) * kTileSize;
-        scratch.block_far.fill(kNoBound);
-        scratch.block_filled.fill(0);
-        scratch.hidden_blocks = 0;
-        if (bins.setups[tile].empty() && !visibility) {  // nothing drawn here: background only
+    TileTimes times;
+    rasterize_each_tile(
+        job, bins, options.threads, avx2_allowed(options.allow_simd), !visibility, times,
+        [&](int tile_x, int tile_y, TileScratch& scratch) {
+            covered += resolve_tile(job, tile_x, tile_y, &resolver, settings.msaa, scratch, &image, visibility);
+            hidden += scratch.hidden_blocks;
+        },
+        [&](int tile_x, int tile_y) {  // nothing drawn here: background only
             const int x1 = std::min(settings.width, tile_x + kTileSize), y1 = std::min(settings.height, tile_y + kTileSize);
             for (int py = tile_y; py < y1; ++py)
                 for (int px = tile_x; px < x1; ++px) resolver.background(image.at(px, py));
-            shade_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - tile_start).count();
-            return;
-        }
-        for (uint32_t index : bins.setups[tile]) {
-            if (use_avx2) rasterize_in_tile_avx2(job, index, tile_x, tile_y, scratch);
-            else rasterize_in_tile_portable(job, index, tile_x, tile_y, scratch);
-        }
-        const auto shade_start = Clock::now();
-        covered += resolve_tile(job, tile_x, tile_y, resolver, settings.msaa, scratch, image, visibility);
-        hidden += scratch.hidden_blocks;
-        if (!bins.setups[tile].empty()) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
-        const auto tile_end = Clock::now();
-        raster_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(shade_start - tile_start).count();
-        shade_ns += std::chrono::duration_cast<std::chrono::nanoseconds>(tile_end - shade_start).count();
-    });
+        });
     stats.samples = static_cast<size_t>(settings.width) * settings.height * samples;
     stats.covered_samples = covered;
     stats.hidden_blocks = hidden;
     // Rasterization and shading are interleaved per tile: their wall time is split as their thread time is.
     const double interleaved_ms = milliseconds_since(stage_start);
-    const double thread_ns = static_cast<double>(raster_ns + shade_ns);
-    const double raster_share = thread_ns > 0.0 ? static_cast<double>(raster_ns.load()) / thread_ns : 1.0;
+    const double thread_ns = static_cast<double>(times.raster_ns + times.shade_ns);
+    const double raster_share = thread_ns > 0.0 ? static_cast<double>(times.raster_ns.load()) / thread_ns : 1.0;
     stats.ms_raster = interleaved_ms * raster_share;
     stats.ms_shade = interleaved_ms - stats.ms_raster;
     stats.ms_total = milliseconds_since(start);
+}
+
+size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
+                       VisibilityBuffer& visibility) {
+    std::vector<std::vector<uint32_t>> lists;
+    const TileBins bins = bin_setups(setups, frame, lists);
+    const int samples = frame.samples();
+    visibility.resize(frame.width, frame.height, samples);
+    const TileJob job{setups, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
+    std::atomic<size_t> hidden{0};
+    TileTimes times;
+    rasterize_each_tile(
+        job, bins, frame.threads, avx2_allowed(allow_simd), false, times,
+        [&](int tile_x, int tile_y, TileScratch& scratch) {
+            resolve_tile(job, tile_x, tile_y, nullptr, false, scratch, nullptr, &visibility);
+            hidden += scratch.hidden_blocks;
+        },
+        [](int, int) {});
+    return hidden;
 }
 
 }  // namespace raster

@@ -1,12 +1,12 @@
 // The real transform chain, observed the way users reach it: through a scene file and the loader.
-#include "mutants/building_blocks.h"
+#include "properties/building_blocks.h"
 
 #include <cstdio>
 #include <string>
 
 #include "raster/formats/scene_loader.h"
 
-namespace raster::mutants {
+namespace raster::properties {
 namespace {
 
 // Nine significant digits read back to the same float.
@@ -25,16 +25,21 @@ std::string vector(const glm::vec3& v) {
 
 }  // namespace
 
+std::string scene_file_with_chain(const ScaleRotateTranslate& chain, const std::array<glm::vec3, 3>& triangle,
+                                  const std::string& preamble) {
+    return preamble +
+           "meshes:\n"
+           "  - vertices: [" + vector(triangle[0]) + ", " + vector(triangle[1]) + ", " + vector(triangle[2]) + "]\n"
+           "    faces: [[0, 1, 2]]\n"
+           "    transform:\n"
+           "      - scale: " + vector(chain.scale) + "\n"
+           "      - rotate: {angle: " + number(chain.degrees) + ", axis: " + vector(chain.axis) + "}\n"
+           "      - translate: " + vector(chain.offset) + "\n";
+}
+
 glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain) {
-    const std::string text =
-        "meshes:\n"
-        "  - vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
-        "    faces: [[0, 1, 2]]\n"
-        "    transform:\n"
-        "      - scale: " + vector(chain.scale) + "\n"
-        "      - rotate: {angle: " + number(chain.degrees) + ", axis: " + vector(chain.axis) + "}\n"
-        "      - translate: " + vector(chain.offset) + "\n";
+    const std::string text = scene_file_with_chain(chain, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
     return parse_scene(text, "model_matrix_from_scene_file.yaml").meshes.at(0).model;
 }
 
-}  // namespace raster::mutants
+}  // namespace raster::properties

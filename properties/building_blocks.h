@@ -2,13 +2,16 @@
 // transform chain), as replaceable functions with the real ones as defaults, so checks can take them as parameters.
 #pragma once
 
+#include <array>
+#include <string>
+
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "raster/core/transform.h"
 
-namespace raster::mutants {
+namespace raster::properties {
 
 // A mesh transform chain as a scene file lists it: `scale`, then `rotate`, then `translate` (README "Scene format").
 struct ScaleRotateTranslate {
@@ -18,8 +21,12 @@ struct ScaleRotateTranslate {
     glm::vec3 offset{0.0f};
 };
 
-// The model matrix the scene loader builds for that chain: it writes a one-mesh raster scene listing the three
-// steps (floats printed so that they read back exactly) and returns parse_scene's model matrix.
+// A raster scene file: `preamble` (image, camera, render settings), then one mesh of one triangle listing the
+// chain's three steps as its transform, every float printed so that it reads back exactly.
+std::string scene_file_with_chain(const ScaleRotateTranslate& chain, const std::array<glm::vec3, 3>& triangle,
+                                  const std::string& preamble = "");
+
+// The model matrix the scene loader builds for that chain: parse_scene's model matrix of that file.
 glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain);
 
 // Each block is a plain function pointer; a mutant replaces one. The vertex stage of PipelineStages calls the
@@ -35,4 +42,4 @@ struct BuildingBlocks {
     glm::mat4 (*model_matrix)(const ScaleRotateTranslate& chain) = model_matrix_from_scene_file;
 };
 
-}  // namespace raster::mutants
+}  // namespace raster::properties
