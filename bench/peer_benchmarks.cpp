@@ -11,6 +11,7 @@
 #include "oracle/reference/ray_caster.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/image/image.h"
+#include "raster/image/to_byte.h"
 #include "raster/pipeline/render.h"
 
 namespace raster_bench {

@@ -21,13 +21,6 @@ struct Image {
     const uint8_t* at(int x, int y) const { return &pixels[(static_cast<size_t>(y) * width + x) * channels]; }
 };
 
-// Linear [0, 1] to a byte: clamp, scale by 255, round half up (NaN gives 0).
-inline uint8_t to_byte(float value) {
-    if (!(value > 0.0f)) return 0;
-    if (value >= 1.0f) return 255;
-    return static_cast<uint8_t>(value * 255.0f + 0.5f);  // < 256 here
-}
-
 enum class ImageFormat { png, ppm };
 
 // The format a file name asks for: ".ppm" gives PPM, anything else PNG.

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "raster/core/parallel.h"
+#include "raster/image/to_byte.h"
 
 namespace raster {
 

@@ -11,6 +11,9 @@
 namespace raster {
 namespace {
 
+// True when the directed edge (dx, dy) is a top or left edge for a triangle with E > 0 inside (y down).
+bool is_top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
+
 // A polygon vertex after the divide and the viewport transform.
 struct ScreenVertex {
     int64_t x, y;

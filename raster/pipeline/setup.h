@@ -54,7 +54,4 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Fra
 // Computed in double from float inputs: each 2x2 product is exact, so only 4 roundings remain.
 bool faces_front(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c);
 
-// True when the directed edge (dx, dy) is a top or left edge for a triangle with E > 0 inside (y down).
-inline bool is_top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
-
 }  // namespace raster

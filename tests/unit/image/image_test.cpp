@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/core/file_io.h"
+#include "raster/image/to_byte.h"
 
 #define STB_IMAGE_IMPLEMENTATION
 #define STBI_ONLY_PNG
