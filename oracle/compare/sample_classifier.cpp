@@ -155,6 +155,10 @@ SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2
     if (oracle.triangle != kNoTriangle && !reference.contains(oracle.triangle, screen) &&
         reference.embree_may_cover(oracle.triangle, screen))
         return SampleClass::edge_band;
+    // ... and it may miss one that exactly covers the sample, where an edge's sign is within Embree's error.
+    if (raster.triangle != kNoTriangle && reference.contains(raster.triangle, screen) &&
+        reference.embree_may_miss(raster.triangle, screen))
+        return SampleClass::edge_band;
     if (count == 2 && depth_tie(reference, involved[0], involved[1], screen)) return SampleClass::depth_tie;
     return SampleClass::visibility;
 }

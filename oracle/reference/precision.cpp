@@ -109,6 +109,14 @@ bool embree_may_cover(const glm::dvec3 v[3], const glm::dvec3 error[3], const gl
     return all_positive || all_negative;
 }
 
+bool embree_may_miss(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction) {
+    const glm::dvec3 values = pluecker_values(v, direction);
+    const glm::dvec3 uncertainty = embree_edge_uncertainty(v, error, direction);
+    const bool surely_positive = values.x >= uncertainty.x && values.y >= uncertainty.y && values.z >= uncertainty.z;
+    const bool surely_negative = values.x <= -uncertainty.x && values.y <= -uncertainty.y && values.z <= -uncertainty.z;
+    return !(surely_positive || surely_negative);
+}
+
 double embree_view_depth_error(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction,
                                double view_depth) {
     const double u = kFloatUnitRoundoff;

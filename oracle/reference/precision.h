@@ -181,8 +181,15 @@ double embree_view_depth_error(const glm::dvec3 v[3], const glm::dvec3 error[3],
 // where eps_max = 2u (1 + gamma_3) (|U| + |V| + |W| + B_U + B_V + B_W) bounds Embree's slack. The comparator uses
 // this for a sample where the oracle shows a triangle that exactly does not cover it (section 4's band aside):
 // when Embree may cover the sample, the disagreement is ambiguous (EDGE BAND).
+// The other way round, Embree may MISS a triangle that exactly covers the sample unless, for one sign s, every
+// s U >= B_U (then Embree's U is of that sign, and its slack only widens what it accepts). That is again the edge
+// band for a fat triangle; for a triangle with a vertex far out (the differential fuzzer found one at 5e5 beside
+// vertices of magnitude 10), the B of its two edges through that vertex is large against the values they take
+// near the other vertices, and Embree missed a sample 3e-4 (in barycentrics) inside such an edge, beyond the band.
+// The comparator uses it where raster shows a triangle that exactly covers the sample and the oracle does not.
 glm::dvec3 embree_edge_uncertainty(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction);
 bool embree_may_cover(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction);
+bool embree_may_miss(const glm::dvec3 v[3], const glm::dvec3 error[3], const glm::dvec3& direction);
 
 // --- 6. Clip boundary ----------------------------------------------------------------------------------------
 // raster's near and far clip edges sit where its float w crosses the plane: within the triangle's largest

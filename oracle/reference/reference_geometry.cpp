@@ -280,6 +280,11 @@ bool ReferenceGeometry::embree_may_cover(uint32_t id, const glm::dvec2& screen) 
     return oracle::embree_may_cover(ray.vertices, ray.vertex_error, ray.direction);
 }
 
+bool ReferenceGeometry::embree_may_miss(uint32_t id, const glm::dvec2& screen) const {
+    const EmbreeRay ray = embree_ray(id, screen);
+    return oracle::embree_may_miss(ray.vertices, ray.vertex_error, ray.direction);
+}
+
 SquareRange ReferenceGeometry::range_around(uint32_t id, const glm::dvec2& screen, double half_side) const {
     SquareRange range;
     if (!std::isfinite(half_side)) return range;

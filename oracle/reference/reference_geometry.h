@@ -73,6 +73,8 @@ public:
     // Whether Embree's edge-by-edge test may report a hit on the triangle for the ray through `screen`
     // (precision.h, section 5, "Embree's coverage").
     bool embree_may_cover(uint32_t id, const glm::dvec2& screen) const;
+    // Whether it may report no hit there though the exact triangle covers the sample (same section).
+    bool embree_may_miss(uint32_t id, const glm::dvec2& screen) const;
 
     // Max-norm distance from `screen` to the polygon's boundary (every edge, whatever made it); infinite when the
     // polygon is empty.

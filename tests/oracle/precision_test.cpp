@@ -243,5 +243,42 @@ TEST(Precision, embreeMayCoverANeedleAlongItsLineBeyondItsTip) {
     EXPECT_FALSE(embree_may_cover(v, error, glm::dvec3(-5, 0.5, -5)));  // beside the needle
 }
 
+TEST(Precision, embreeMayMissARayTheTriangleExactlyCoversOnlyWithinAnEdgesUncertainty) {
+    // The fat triangle of the test above: inside is x > 0, where U = -2 x < 0 and V, W < 0. Embree surely reports
+    // the hit once -U >= B_U, that is x >= B_U / 2; nearer the edge it may miss it.
+    const glm::dvec3 v[3] = {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}};
+    const glm::dvec3 error[3] = {glm::dvec3(1e-7), glm::dvec3(1e-7), glm::dvec3(1e-7)};
+    auto ray = [](double x) { return glm::dvec3(x, 0.25, -1.0); };
+    const double limit = 0.5 * embree_edge_uncertainty(v, error, ray(0.0)).x;
+    EXPECT_FALSE(embree_may_miss(v, error, ray(0.25)));
+    EXPECT_TRUE(embree_may_miss(v, error, ray(limit * (1 - 1e-2))));
+    EXPECT_FALSE(embree_may_miss(v, error, ray(limit * (1 + 1e-2))));
+    const glm::dvec3 reversed[3] = {v[0], v[2], v[1]};
+    EXPECT_FALSE(embree_may_miss(reversed, error, ray(0.25)));
+    // The differential fuzzer's case (rounded): one vertex far out, at 5e5, beside two of magnitude 10 to 30,
+    // each vertex within gamma_8 of its magnitude (the oracle's float view transform). Embree's Pluecker value of
+    // an edge to the far vertex, 2 dot((v_b - v_a) x (v_b + v_a), D), sums products of two of its large
+    // components that cancel down to |v_a| |v_b|: its float error is about u 1e11, against values of 1e3 near that
+    // edge. A ray 3e-4 (in barycentrics) inside such an edge may be missed; with the far vertex brought in to
+    // magnitude 50, the same barycentrics are surely hit.
+    auto oracle_errors = [](const glm::dvec3 (&p)[3], glm::dvec3 (&e)[3]) {
+        for (int k = 0; k < 3; ++k) e[k] = float_gamma(8) * glm::abs(p[k]);
+    };
+    auto point = [](const glm::dvec3 (&p)[3], const glm::dvec3& bary) {
+        return bary.x * p[0] + bary.y * p[1] + bary.z * p[2];
+    };
+    const glm::dvec3 bary(1.3e-5, 1.0 - 1.3e-5 - 2.7e-4, 2.7e-4);
+    const glm::dvec3 far_out[3] = {{-292188, 224038, -373261}, {-3.90337, -0.579734, -8.96375},
+                                   {3.84151, -4.19157, -27.7218}};
+    const glm::dvec3 near_by[3] = {1e-4 * far_out[0], far_out[1], far_out[2]};
+    glm::dvec3 far_error[3], near_error[3];
+    oracle_errors(far_out, far_error);
+    oracle_errors(near_by, near_error);
+    EXPECT_TRUE(embree_may_miss(far_out, far_error, point(far_out, bary)));
+    EXPECT_FALSE(embree_may_miss(near_by, near_error, point(near_by, bary)));
+    // Near that sample the uncertainty is 3% of the values' sum, so a sample 10% inside the same edge is surely hit.
+    EXPECT_FALSE(embree_may_miss(far_out, far_error, point(far_out, glm::dvec3(1.3e-5, 0.9 - 1.3e-5, 0.1))));
+}
+
 }  // namespace
 }  // namespace raster::oracle
