@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <system_error>
@@ -65,6 +66,15 @@ public:
             if (tok.empty()) continue;  // blank header lines are tolerated
             const std::string_view keyword = tok[0];
             if (keyword == "comment" || keyword == "obj_info") continue;
+            if (keyword == "Created" && tok.size() > 1 && tok[1] == "by") {
+                // Blender 2.4x's exporter writes "Created by Blender 2.49 - www.blender.org, source file: ..."
+                // without 'comment'. The readers users know take it as a comment; so does raster, and says so.
+                std::fprintf(stderr,
+                             "%s:%lld: warning: header line 'Created by ...' has no 'comment' keyword (Blender 2.4x "
+                             "writes it so); read as a comment\n",
+                             name_.c_str(), static_cast<long long>(line_no));
+                continue;
+            }
             if (keyword == "format") {
                 parse_format(tok, line_no, have_format);
                 have_format = true;

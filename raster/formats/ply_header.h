@@ -48,6 +48,7 @@ int64_t type_max(Type t);       // integer types only
 // Parses the header at the start of `bytes` (`name` names the file in errors). Throws InputError with the line
 // (and the column of the token at fault) on anything the grammar or its limits refuse, including a vertex or face
 // count over the mesh limits, colours or normals given in part, and a `vertex` element without x, y and z.
+// Blender 2.4x's `Created by ...` line without `comment` is read as a comment, with a warning on stderr.
 Header parse_header(std::string_view bytes, const std::string& name);
 
 }  // namespace raster::ply

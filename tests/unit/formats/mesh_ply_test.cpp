@@ -143,6 +143,28 @@ TEST(PlyLoader, readsBinaryLittleEndianWithFloatColoursAndNormals) {
     EXPECT_EQ(mesh.object_names, std::vector<std::string>{"bin"});
 }
 
+// Blender 2.4x writes its banner without 'comment': read as one, with a warning naming the file and line. A line
+// that only looks like it ("Created" alone, or another word) is still refused.
+TEST(PlyLoader, readsBlender24xCreatedByLineAsACommentWithAWarning) {
+    std::string blender = kTetrahedron;
+    blender.insert(blender.find("element vertex"),
+                   "Created by Blender 2.49 (sub 2) - www.blender.org, source file: 'tetra.blend'\n");
+    testing::internal::CaptureStderr();
+    const MeshData mesh = parse_ply(blender, "meshes/tetra.ply");
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_TRUE(contains(warning, "meshes/tetra.ply:5: warning:"));
+    EXPECT_TRUE(contains(warning, "Created by"));
+    const MeshData plain = parse_ply(kTetrahedron, "meshes/tetra.ply");
+    EXPECT_EQ(mesh.positions, plain.positions);
+    EXPECT_EQ(mesh.colors, plain.colors);
+    ASSERT_EQ(mesh.triangles.size(), plain.triangles.size());
+    for (const char* near_miss : {"Created\n", "Created with Blender\n", "created by Blender\n"}) {
+        std::string refused = kTetrahedron;
+        refused.insert(refused.find("element vertex"), near_miss);
+        EXPECT_THROW(parse_ply(refused, "meshes/tetra.ply"), InputError) << near_miss;
+    }
+}
+
 TEST(PlyLoader, triangulatesQuadAndPentagonAsFans) {
     const std::string text =
         "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
