@@ -161,9 +161,7 @@ double facing_uncertainty(const glm::dvec4 clip[3], const glm::dvec4 error[3]) {
         moved *= glm::length(row) + glm::length(row_error);
         moved_sum_norm *= std::fabs(row.x) + std::fabs(row.y) + std::fabs(row.z) + row_error.x + row_error.y + row_error.z;
     }
-    constexpr double kDoubleUnitRoundoff = 0x1p-53;
-    const double double_gamma = kFacingDoubleRoundings * kDoubleUnitRoundoff / (1.0 - kFacingDoubleRoundings * kDoubleUnitRoundoff);
-    return (moved - exact) + double_gamma * moved_sum_norm;
+    return (moved - exact) + double_gamma(kFacingDoubleRoundings) * moved_sum_norm;
 }
 
 bool facing_is_uncertain(const glm::dvec4 clip[3], const glm::dvec4 error[3]) {

@@ -229,7 +229,8 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
     const double determinant = glm::dot(tri.edge1, p);
     ExactHit hit;
     // Within the plane noise (precision.h) the double geometry cannot place the hit: none (NaN and inf included).
-    if (!(std::fabs(determinant) > tri.plane_noise * glm::length(direction)) || !std::isfinite(determinant)) return hit;
+    if (!(std::fabs(determinant) > tri.plane_noise * glm::length(direction)) || !std::isfinite(determinant))
+        return hit;
     const glm::dvec3 to_eye = -tri.a;
     const glm::dvec3 q = glm::cross(to_eye, tri.edge1);
     const double u = glm::dot(to_eye, p) / determinant;
