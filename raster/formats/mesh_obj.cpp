@@ -69,9 +69,17 @@ MeshData parse_obj(std::string_view text, const std::string& name) {
 
     MeshData mesh;
     mesh.triangles.reserve(triangle_count);
+    // Texture coordinates are kept when every corner names one (the scene drops them where no material is textured).
+    bool with_uvs = !file.texcoords.empty();
+    for (const obj::Corner& corner : file.corners) with_uvs = with_uvs && corner.texcoord != obj::kNoTexcoord;
+    if (with_uvs) mesh.corner_uvs.reserve(triangle_count);
+    const bool with_materials = !file.material_names.empty();
+    for (size_t k = 0; k < file.material_libraries.size(); ++k)
+        mesh.material_libraries.push_back({file.material_libraries[k], file.material_library_lines[k]});
     VertexNumbering numbering(file, mesh);
     std::vector<glm::vec3> polygon;
     std::vector<PolygonTriangle> triangles;
+    uint32_t run_material = obj::kNoMaterial;
     for (size_t object = 0; object < file.objects.size(); ++object) {
         mesh.object_names.push_back(file.objects[object].name);
         mesh.object_first_triangle.push_back(static_cast<uint32_t>(mesh.triangles.size()));
@@ -83,9 +91,21 @@ MeshData parse_obj(std::string_view text, const std::string& name) {
                 polygon.push_back(file.positions[corners[k].position]);
             triangles.clear();
             triangulate_polygon(polygon, triangles);
-            for (const PolygonTriangle& t : triangles)
+            const uint32_t material = file.faces[f].material;
+            if (with_materials && !triangles.empty() &&
+                (mesh.material_runs.empty() || material != run_material)) {
+                run_material = material;
+                mesh.material_runs.push_back({material == obj::kNoMaterial ? "" : file.material_names[material],
+                                              static_cast<uint32_t>(mesh.triangles.size())});
+            }
+            for (const PolygonTriangle& t : triangles) {
                 mesh.triangles.push_back({{numbering.vertex_of(corners[t[0]]), numbering.vertex_of(corners[t[1]]),
                                            numbering.vertex_of(corners[t[2]])}});
+                if (with_uvs)
+                    mesh.corner_uvs.push_back({{file.texcoords[corners[t[0]].texcoord],
+                                                file.texcoords[corners[t[1]].texcoord],
+                                                file.texcoords[corners[t[2]].texcoord]}});
+            }
         }
     }
     numbering.finish();

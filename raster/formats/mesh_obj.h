@@ -12,8 +12,9 @@ namespace raster {
 // Parses OBJ text; `name` is used in error messages only. The objects of the file (`o`/`g`; which of them are kept
 // is tinyobjloader's rule, see mesh_obj_reader.cpp) are kept in order in one MeshData, object_names /
 // object_first_triangle marking where each starts. Normals are kept when
-// every face corner has one; vertex colours (`v x y z r g b`) when every vertex has one. Materials (mtllib) and
-// texture coordinates are not read: no stage uses them. Throws InputError on malformed input, indices out of
+// every face corner has one; vertex colours (`v x y z r g b`) when every vertex has one; texture coordinates, per
+// triangle corner, when every corner has one. `usemtl` runs and `mtllib` names are kept for the scene to resolve
+// (obj_materials.h); the material files are not read here. Throws InputError on malformed input, indices out of
 // range, non-finite coordinates or sizes over the limits in mesh.h.
 MeshData parse_obj(std::string_view text, const std::string& name);
 

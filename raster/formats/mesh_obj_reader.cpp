@@ -143,6 +143,15 @@ private:
             read_vertex(words);
         } else if (keyword == "vn") {
             read_normal(words);
+        } else if (keyword == "vt") {
+            read_texcoord(words);
+        } else if (keyword == "usemtl" && has_rest) {
+            use_material(rest);
+        } else if (keyword == "mtllib" && has_rest) {
+            for (const std::string_view library : split_words(rest)) {
+                out_.material_libraries.emplace_back(library);
+                out_.material_library_lines.push_back(line_number_);
+            }
         } else if (keyword == "f") {
             read_face(words, visible, visible.size() < line.size());
         } else if ((keyword == "l" || keyword == "p") && has_rest) {
@@ -202,8 +211,36 @@ private:
         out_.normals.push_back(vec3_of(&values[0]));
     }
 
-    // Reads corner `word` (v, v/vt, v//vn or v/vt/vn) into `corner`, or returns what is wrong with it. Texture
-    // indices are not kept, as no stage reads them; `forward` collects indices past what is defined so far.
+    // Texture coordinates are read as tinyobjloader read them, never refused: a value that is not a number is 0.
+    void read_texcoord(const Words& words) {
+        glm::vec2 uv(0.0f);
+        for (size_t k = 1; k < std::min<size_t>(words.size(), 3); ++k) {
+            const std::optional<double> value = number_value(words[k]);
+            const double v = value && std::isfinite(*value) && std::fabs(*value) <= 3.0e38 ? *value : 0.0;
+            uv[static_cast<int>(k - 1)] = static_cast<float>(v);
+        }
+        out_.texcoords.push_back(uv);
+    }
+
+    // `usemtl name`: the faces that follow use material `name` (the rest of the line, as tinyobjloader took it).
+    void use_material(std::string_view rest) {
+        const std::string name(rest);
+        const auto known = std::find(out_.material_names.begin(), out_.material_names.end(), name);
+        material_ = static_cast<uint32_t>(known - out_.material_names.begin());
+        if (known == out_.material_names.end()) out_.material_names.push_back(name);
+    }
+
+    // A corner's texture index, when it names a texture coordinate the file has defined so far.
+    std::optional<uint32_t> texcoord_index(std::string_view part) const {
+        const std::optional<long> index = index_in(part);
+        const long count = static_cast<long>(out_.texcoords.size());
+        if (!index || *index == 0 || *index > count || *index < -count) return std::nullopt;
+        return static_cast<uint32_t>(*index > 0 ? *index - 1 : count + *index);
+    }
+
+    // Reads corner `word` (v, v/vt, v//vn or v/vt/vn) into `corner`, or returns what is wrong with it. A texture
+    // index is kept when it names a coordinate defined before it and otherwise dropped, never refused (as
+    // tinyobjloader read them); `forward` collects position and normal indices past what is defined so far.
     std::optional<std::string> read_corner(std::string_view word, Corner& corner, bool& has_texture,
                                            std::vector<ForwardReference>* forward) const {
         const std::string shown(word);
@@ -225,6 +262,7 @@ private:
             (normal ? corner.normal : corner.position) = resolved;
         }
         has_texture = parts.count == 2 || (parts.count == 3 && !parts.part[1].empty());
+        if (has_texture) corner.texcoord = texcoord_index(parts.part[1]).value_or(kNoTexcoord);
         return std::nullopt;
     }
 
@@ -262,7 +300,7 @@ private:
         group_.has_statements = true;
         const size_t corner_count = out_.corners.size() - first_corner;
         if (corner_count >= 3) {
-            out_.faces.push_back({first_corner, corner_count});
+            out_.faces.push_back({first_corner, corner_count, material_});
         } else {
             out_.corners.resize(first_corner);  // tinyobjloader skipped a face it saw fewer than 3 corners of
         }
@@ -305,6 +343,7 @@ private:
     ObjStatements out_;
     OpenGroup group_;
     bool every_vertex_coloured_ = true;
+    uint32_t material_ = kNoMaterial;
     std::vector<ForwardReference> forward_references_;
     std::optional<std::pair<int64_t, std::string>> tinyobj_error_;
 };

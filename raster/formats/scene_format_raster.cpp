@@ -5,6 +5,7 @@
 #include "raster/scene/sample_counts.h"
 #include "raster/formats/scene_formats.h"
 #include "raster/core/transform.h"
+#include "raster/texture/texture.h"
 
 namespace raster {
 
@@ -117,7 +118,7 @@ void read_camera(const Node& node, const DocumentReader& reader, Camera& camera)
 void read_render(const Node& node, const DocumentReader& reader, RenderSettings& settings) {
     reader.expect_map(node, "render");
     reader.check_keys(node, {"samples", "pattern", "msaa", "shading", "cull", "snap_bits", "ambient", "edges",
-                             "interpolation", "depth", "clipping", "hierarchical_z"});
+                             "interpolation", "depth", "clipping", "hierarchical_z", "cel_bands", "gooch"});
     if (const Node& v = reader.optional(node, "samples"); v.is_defined())
         settings.samples = reader.integer(v, "samples", 1, 256);
     if (const Node& v = reader.optional(node, "pattern"); v.is_defined()) {
@@ -127,7 +128,23 @@ void read_render(const Node& node, const DocumentReader& reader, RenderSettings&
     if (const Node& v = reader.optional(node, "msaa"); v.is_defined()) settings.msaa = reader.boolean(v, "msaa");
     if (const Node& v = reader.optional(node, "shading"); v.is_defined()) {
         if (!parse_shading_mode(reader.string(v, "shading"), settings.shading))
-            reader.fail(v, "shading must be unlit, flat, gouraud, phong or blinn-phong");
+            reader.fail(v, "shading must be unlit, flat, gouraud, phong, blinn-phong, cel or gooch");
+    }
+    if (const Node& v = reader.optional(node, "cel_bands"); v.is_defined())
+        settings.cel_bands = reader.integer(v, "cel_bands", 1, 64);
+    if (const Node& v = reader.optional(node, "gooch"); v.is_defined()) {
+        reader.expect_map(v, "gooch");
+        reader.check_keys(v, {"blue", "yellow", "alpha", "beta"});
+        auto tone = [&](const char* key, float& out) {
+            if (const Node& t = reader.optional(v, key); t.is_defined()) {
+                out = reader.finite_float(t, key);
+                if (out < 0.0f || out > 1.0f) reader.fail(t, std::string("gooch ") + key + " must be in [0, 1]");
+            }
+        };
+        tone("blue", settings.gooch.blue);
+        tone("yellow", settings.gooch.yellow);
+        tone("alpha", settings.gooch.alpha);
+        tone("beta", settings.gooch.beta);
     }
     if (const Node& v = reader.optional(node, "cull"); v.is_defined()) {
         const std::string cull = reader.string(v, "cull");
@@ -179,9 +196,36 @@ Light read_light(const Node& node, const DocumentReader& reader) {
     return light;
 }
 
-Material read_material(const Node& node, const DocumentReader& reader) {
+// A material's texture keys: texture (an image file), filter, wrap, max_anisotropy (README "Textures").
+void read_texture_keys(const Node& node, const DocumentReader& reader, const TextureFileLoader& load_texture,
+                       Material& material) {
+    const Node& file = reader.optional(node, "texture");
+    if (!file.is_defined()) {
+        for (const char* key : {"filter", "wrap", "max_anisotropy"})
+            if (const Node& v = reader.optional(node, key); v.is_defined())
+                reader.fail(v, std::string(key) + " is a texture setting, but the material has no texture");
+        return;
+    }
+    TextureBinding binding;
+    binding.texture = load_texture(file, reader.string(file, "texture"));
+    binding.path = binding.texture->path;
+    if (const Node& v = reader.optional(node, "filter"); v.is_defined()) {
+        if (!parse_texture_filter(reader.string(v, "filter"), binding.filter))
+            reader.fail(v, "filter must be nearest, bilinear, trilinear or anisotropic");
+    }
+    if (const Node& v = reader.optional(node, "wrap"); v.is_defined()) {
+        if (!parse_texture_wrap(reader.string(v, "wrap"), binding.wrap))
+            reader.fail(v, "wrap must be repeat, clamp or mirror");
+    }
+    if (const Node& v = reader.optional(node, "max_anisotropy"); v.is_defined())
+        binding.max_anisotropy = reader.integer(v, "max_anisotropy", 1, 64);
+    material.texture = binding;
+}
+
+Material read_material(const Node& node, const DocumentReader& reader, const TextureFileLoader& load_texture) {
     reader.expect_map(node, "material");
-    reader.check_keys(node, {"color", "ambient", "diffuse", "specular", "exponent"});
+    reader.check_keys(node, {"color", "ambient", "diffuse", "specular", "exponent", "texture", "filter", "wrap",
+                             "max_anisotropy"});
     Material material;
     if (const Node& v = reader.optional(node, "color"); v.is_defined()) material.color = read_color(v, reader, "material color");
     if (const Node& v = reader.optional(node, "ambient"); v.is_defined()) material.ambient = read_color(v, reader, "ambient");
@@ -191,6 +235,7 @@ Material read_material(const Node& node, const DocumentReader& reader) {
         material.exponent = reader.finite_float(v, "exponent");
         if (material.exponent < 0.0f) reader.fail(v, "exponent must be >= 0");
     }
+    read_texture_keys(node, reader, load_texture, material);
     return material;
 }
 
@@ -228,6 +273,18 @@ MeshData read_inline_mesh(const Node& node, const DocumentReader& reader) {
     };
     per_vertex("normals", mesh.normals, false);
     per_vertex("vertex_colors", mesh.colors, true);
+    if (const Node& list = reader.optional(node, "uvs"); list.is_defined()) {
+        reader.expect_sequence(list, "uvs");
+        if (list.size() != mesh.positions.size())
+            reader.fail(list, "uvs must have one entry per vertex (" + std::to_string(mesh.positions.size()) +
+                                  "), has " + std::to_string(list.size()));
+        std::vector<glm::vec2> uvs;
+        for (const Node& v : list.items()) {
+            if (!v.is_sequence() || v.size() != 2) reader.fail(v, "a uv is [u, v]");
+            uvs.emplace_back(reader.finite_float(v[0], "u"), reader.finite_float(v[1], "v"));
+        }
+        for (const TriangleIndices& t : mesh.triangles) mesh.corner_uvs.push_back({{uvs[t.v[0]], uvs[t.v[1]], uvs[t.v[2]]}});
+    }
     if (const Node& list = reader.optional(node, "face_colors"); list.is_defined()) {
         reader.expect_sequence(list, "face_colors");
         if (list.size() != faces.size())
@@ -244,29 +301,33 @@ MeshData read_inline_mesh(const Node& node, const DocumentReader& reader) {
     return mesh;
 }
 
-SceneMesh read_mesh(const Node& node, const DocumentReader& reader, const MeshFileLoader& load_mesh) {
+SceneMesh read_mesh(const Node& node, const DocumentReader& reader, const SceneFileLoaders& files) {
     reader.expect_map(node, "a mesh");
-    reader.check_keys(node, {"file", "vertices", "faces", "normals", "vertex_colors", "face_colors", "transform",
-                             "material"});
+    reader.check_keys(node, {"file", "vertices", "faces", "normals", "vertex_colors", "face_colors", "uvs",
+                             "transform", "material"});
     SceneMesh mesh;
     const Node& file = reader.optional(node, "file");
     if (file.is_defined() == reader.optional(node, "vertices").is_defined())
         reader.fail(node, "a mesh has either 'file' or inline 'vertices' and 'faces'");
     if (file.is_defined()) {
         mesh.source = reader.string(file, "file");
-        mesh.data = load_mesh(file, mesh.source);
+        mesh.data = files.mesh(file, mesh.source);
     } else {
         mesh.source = reader.file() + ":" + std::to_string(node.line()) + " (inline mesh)";
         mesh.data = read_inline_mesh(node, reader);
     }
     if (const Node& v = reader.optional(node, "transform"); v.is_defined()) mesh.model = read_transform_chain(v, reader);
-    if (const Node& v = reader.optional(node, "material"); v.is_defined()) mesh.material = read_material(v, reader);
+    // The scene's material, when it gives one, is every triangle's; else an OBJ's own materials apply.
+    if (const Node& v = reader.optional(node, "material"); v.is_defined())
+        mesh.material = read_material(v, reader, files.texture);
+    else if (file.is_defined())
+        files.obj_materials(file, mesh.source, mesh, std::nullopt);
     return mesh;
 }
 
 }  // namespace
 
-void read_raster_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
+void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene) {
     reader.check_keys(root, {"image", "camera", "render", "lights", "meshes"});
     if (const Node& v = reader.optional(root, "image"); v.is_defined()) read_image(v, reader, scene.settings);
     if (const Node& v = reader.optional(root, "render"); v.is_defined()) read_render(v, reader, scene.settings);
@@ -278,7 +339,7 @@ void read_raster_scene(const Node& root, const DocumentReader& reader, const Mes
     }
     const Node& meshes = reader.required(root, "meshes");
     reader.expect_sequence(meshes, "meshes");
-    for (const Node& mesh : meshes.items()) scene.meshes.push_back(read_mesh(mesh, reader, load_mesh));
+    for (const Node& mesh : meshes.items()) scene.meshes.push_back(read_mesh(mesh, reader, files));
 }
 
 }  // namespace raster

@@ -7,7 +7,7 @@
 
 namespace raster {
 
-void read_seed003_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
+void read_seed003_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene) {
     const auto known = {"eye", "lookat", "up", "fov_angle", "width", "height", "near", "far", "lights", "meshes"};
     if (std::string unknown = reader.unknown_keys(root, known); !unknown.empty())
         std::fprintf(stderr, "%s: warning: ignoring keys %s\n", reader.file().c_str(), unknown.c_str());
@@ -55,13 +55,15 @@ void read_seed003_scene(const Node& root, const DocumentReader& reader, const Me
         SceneMesh mesh;
         const Node& obj = reader.required(node, "obj");
         mesh.source = reader.string(obj, "obj");
-        mesh.data = load_mesh(obj, mesh.source);
+        mesh.data = files.mesh(obj, mesh.source);
         mesh.data.normals.clear();  // the document: vertex normals are the average of the adjacent face normals
         mesh.material.color = glm::vec3(1.0f);
         mesh.material.ambient = reader.vec3(reader.required(node, "ambient"), "ambient");
         mesh.material.diffuse = reader.vec3(reader.required(node, "diffuse"), "diffuse");
         mesh.material.specular = reader.vec3(reader.required(node, "specular"), "specular");
         mesh.material.exponent = reader.finite_float(reader.required(node, "phong_exponent"), "phong_exponent");
+        // The scene sets the coefficients; the OBJ's materials (mtllib, usemtl) add their textures (map_Kd).
+        files.obj_materials(obj, mesh.source, mesh, mesh.material);
         scene.meshes.push_back(std::move(mesh));
     }
 }

@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -17,8 +19,19 @@ namespace raster {
 // Resolves a mesh path from a scene relative to the scene file's folder and loads it (each file once per scene).
 using MeshFileLoader = std::function<const MeshData&(const Node& where, const std::string& path)>;
 
-void read_raster_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
-void read_seed003_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+// Sets a mesh's material and parts from the materials of the OBJ `file` it was read from (obj_materials.h).
+using ObjMaterialLoader = std::function<void(const Node& where, const std::string& file, SceneMesh& mesh,
+                                             const std::optional<Material>& coefficients)>;
+// Loads a texture a scene names, relative to the scene file's folder (each image once per scene).
+using TextureFileLoader = std::function<std::shared_ptr<const Texture>(const Node& where, const std::string& file)>;
+struct SceneFileLoaders {
+    MeshFileLoader mesh;
+    ObjMaterialLoader obj_materials;
+    TextureFileLoader texture;
+};
+
+void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
+void read_seed003_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
 // Seed 000 configs: the scene the config's task draws (see scene_format_seed000.h); read_seed000_config reads the
 // rest (task, output, transform-test values).
 void read_seed000_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);

@@ -12,6 +12,7 @@
 #include "raster/scene/validation.h"
 #include "raster/formats/scene_formats.h"
 #include "raster/formats/document_reader.h"
+#include "raster/formats/scene_files.h"
 
 namespace raster {
 
@@ -53,31 +54,18 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& path, Scen
     if (!root.is_defined() || root.is_null()) throw InputError(name, 1, 1, "the scene file is empty");
     reader.expect_map(root, "a scene");
 
-    std::map<std::string, std::unique_ptr<MeshData>> meshes;
-    const MeshFileLoader load_mesh = [&](const Node& where, const std::string& file) -> const MeshData& {
-        std::filesystem::path mesh_path(file);
-        if (mesh_path.is_relative()) mesh_path = path.parent_path() / mesh_path;
-        auto& slot = meshes[mesh_path.lexically_normal().string()];
-        if (!slot) {
-            try {
-                slot = std::make_unique<MeshData>(load_mesh_file(mesh_path));
-            } catch (const InputError& error) {
-                // Say where the scene asked for the mesh, and what is wrong inside it.
-                reader.fail(where, "in mesh '" + file + "': " + error.what());
-            }
-        }
-        return *slot;
-    };
-
+    SceneFiles files(path, reader);
+    const SceneFileLoaders loaders = files.loaders();
     Scene scene;
     scene.path = name;
     const SceneFormat detected = detect_format(root, reader);
     switch (detected) {
-        case SceneFormat::raster: read_raster_scene(root, reader, load_mesh, scene); break;
-        case SceneFormat::seed003: read_seed003_scene(root, reader, load_mesh, scene); break;
-        case SceneFormat::seed000: read_seed000_scene(root, reader, load_mesh, scene); break;
-        case SceneFormat::seed001: read_seed001_scene(root, reader, load_mesh, scene); break;
+        case SceneFormat::raster: read_raster_scene(root, reader, loaders, scene); break;
+        case SceneFormat::seed003: read_seed003_scene(root, reader, loaders, scene); break;
+        case SceneFormat::seed000: read_seed000_scene(root, reader, loaders.mesh, scene); break;
+        case SceneFormat::seed001: read_seed001_scene(root, reader, loaders.mesh, scene); break;
     }
+    finish_scene_textures(scene);
     validate_scene(scene);
     if (format) *format = detected;
     return scene;

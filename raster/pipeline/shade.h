@@ -7,8 +7,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "raster/scene/scene.h"
+#include "raster/pipeline/texture_lookup.h"
 #include "raster/pipeline/vertex_stage.h"
+#include "raster/scene/scene.h"
 
 namespace raster {
 
@@ -20,6 +21,20 @@ struct LightingTerms {
 };
 
 enum class SpecularModel { blinn, phong };
+
+// What one point light gives a surface point: the unit direction to it, n.l, and its radiance (colour times
+// intensity, over r^2 with attenuation).
+struct LightArrival {
+    glm::vec3 to_light{0.0f};
+    float n_dot_l = 0.0f;
+    glm::vec3 radiance{0.0f};
+};
+// False when the light adds nothing: it sits on the point, or lies behind the surface (n.l <= 0; one-sided).
+bool light_arrives(const Light& light, const glm::vec3& position, const glm::vec3& normal, LightArrival& out);
+
+// Blinn's lobe n.h, h the normalised half vector of the unit vectors to the light and to the eye (0 when they are
+// opposite).
+float blinn_lobe(const glm::vec3& normal, const glm::vec3& to_light, const glm::vec3& to_eye);
 
 // Ambient plus, for each light, Lambert diffuse and a specular lobe, with optional 1/r^2 attenuation. Lighting is
 // one-sided: a light behind the surface (n.l <= 0) adds nothing. `normal` must be unit length; `to_eye` is the
@@ -37,8 +52,8 @@ using LightingFunction = LightingTerms (*)(const glm::vec3&, const glm::vec3&, c
                                            const std::vector<Light>&, const glm::vec3&, SpecularModel);
 
 // Everything shading needs, prepared once per frame for the scene's shading mode: per-vertex lit terms for
-// Gouraud, per-face colours for flat, nothing extra for unlit. Holds pointers into `scene` and `geometry`,
-// which must outlive it.
+// Gouraud, per-face colours for flat, texture coordinates and gradients for textured triangles, nothing extra
+// for unlit. Holds pointers into `scene` and `geometry`, which must outlive it.
 class Shader {
 public:
     Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting = evaluate_lighting);
@@ -47,14 +62,24 @@ public:
     glm::vec3 shade(uint32_t triangle, const glm::vec3& bary) const;
 
 private:
+    // The face colour, else the interpolated vertex colour, else the material colour; no texture.
     glm::vec3 base_color(uint32_t triangle, const glm::vec3& bary) const;
+    // The texture's value at the point when the triangle's material has one (it multiplies the base colour).
+    bool texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3& factor) const;
+    const Material& material(uint32_t triangle) const;
+    LightingTerms light_at(uint32_t triangle, const glm::vec3& bary) const;
+    const LightingTerms& corner_terms(uint32_t triangle, int corner) const;
 
     const Scene& scene_;
     const TransformedScene& geometry_;
     ShadingMode mode_;
     LightingFunction lighting_;
-    std::vector<LightingTerms> vertex_terms_;  // gouraud only: per global vertex
-    std::vector<glm::vec3> face_color_;        // flat only: per triangle, final colour
+    std::vector<const Material*> triangle_material_;  // per triangle, only when a mesh has several materials
+    std::vector<LightingTerms> vertex_terms_;  // gouraud only: per global vertex, or per triangle corner (3 t + k)
+                                               // when a mesh has several materials
+    std::vector<glm::vec3> face_color_;        // flat only: per triangle, final colour without texture
+    std::vector<LightingTerms> face_terms_;    // flat with textures only: per triangle, base * diffuse, specular
+    TextureLookup textures_;                   // textured scenes only
 };
 
 }  // namespace raster

@@ -12,7 +12,7 @@ VertexStageNeeds vertex_stage_needs(ShadingMode mode) {
     VertexStageNeeds needs;
     needs.world_positions = mode != ShadingMode::unlit;
     needs.vertex_normals = mode == ShadingMode::gouraud || mode == ShadingMode::phong ||
-                           mode == ShadingMode::blinn_phong;
+                           mode == ShadingMode::blinn_phong || mode == ShadingMode::cel || mode == ShadingMode::gooch;
     return needs;
 }
 

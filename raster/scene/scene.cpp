@@ -1,6 +1,9 @@
 // Names of the scene's enumerations, shared by the loaders and the command line.
 #include "raster/scene/scene.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace raster {
 
 namespace {
@@ -11,7 +14,8 @@ struct ShadingName {
 constexpr ShadingName kShadingNames[] = {
     {ShadingMode::unlit, "unlit"},     {ShadingMode::flat, "flat"},
     {ShadingMode::gouraud, "gouraud"}, {ShadingMode::phong, "phong"},
-    {ShadingMode::blinn_phong, "blinn-phong"},
+    {ShadingMode::blinn_phong, "blinn-phong"}, {ShadingMode::cel, "cel"},
+    {ShadingMode::gooch, "gooch"},
 };
 }  // namespace
 
@@ -38,6 +42,19 @@ bool parse_sample_pattern(const std::string& name, SamplePattern& out) {
     else if (name == "grid") out = SamplePattern::grid;
     else return false;
     return true;
+}
+
+const Material& material_of(const SceneMesh& mesh, uint32_t triangle) {
+    const auto after = std::upper_bound(mesh.parts.begin(), mesh.parts.end(), triangle,
+                                        [](uint32_t t, const MaterialPart& part) { return t < part.first_triangle; });
+    return after == mesh.parts.begin() ? mesh.material : std::prev(after)->material;
+}
+
+bool has_textures(const Scene& scene) {
+    bool textured = false;
+    for (const SceneMesh& mesh : scene.meshes)
+        for_each_material(mesh, [&](const Material& material) { textured = textured || material.texture.has_value(); });
+    return textured;
 }
 
 size_t triangle_count(const Scene& scene) {

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "raster/core/conventions.h"
+#include "raster/scene/material.h"
 #include "raster/scene/mesh.h"
 #include "raster/scene/precision_modes.h"
 
@@ -19,6 +20,8 @@ enum class ShadingMode {
     gouraud,      // Blinn-Phong per vertex, colours interpolated
     phong,        // per-sample lighting with interpolated normals, Phong's reflection-vector specular (r.v)^e
     blinn_phong,  // per-sample lighting with interpolated normals, Blinn's half-vector specular (n.h)^e
+    cel,          // per-sample toon shading: n.l quantised into `cel_bands` bands, a hard-edged highlight
+    gooch,        // per-sample cool-to-warm shading (Gooch et al. 1998) from the first light, with its highlight
 };
 
 enum class SamplePattern {
@@ -44,22 +47,32 @@ struct Light {
     bool attenuate = false;
 };
 
-// Blinn-Phong coefficients, each RGB. The base colour multiplies ambient and diffuse; specular is the highlight's
-// own colour. The base colour is the mesh's face colour, else its interpolated vertex colour, else `color`.
-struct Material {
-    glm::vec3 color{1.0f};
-    glm::vec3 ambient{0.1f};
-    glm::vec3 diffuse{0.7f};
-    glm::vec3 specular{0.2f};
-    float exponent = 32.0f;
-};
-
 // One mesh placed in the world: its data in object space, the model matrix and its material.
 struct SceneMesh {
     MeshData data;
     glm::mat4 model{1.0f};
-    Material material;
+    Material material;               // every triangle's, unless `parts` gives some another
+    std::vector<MaterialPart> parts;  // OBJ usemtl: by increasing first_triangle; empty when one material
     std::string source;  // the file it came from, or "inline"
+};
+
+// The material of the mesh's local triangle `triangle`: its part's, or the mesh's.
+const Material& material_of(const SceneMesh& mesh, uint32_t triangle);
+
+// Every material a mesh uses, its own first (for checks and loaders that treat them all alike).
+template <typename Visit>
+void for_each_material(const SceneMesh& mesh, Visit visit) {
+    visit(mesh.material);
+    for (const MaterialPart& part : mesh.parts) visit(part.material);
+}
+
+// Gooch et al. 1998's cool-to-warm tones: k_cool = (0, 0, blue) + alpha k_d, k_warm = (yellow, yellow, 0) + beta k_d,
+// where k_d is the base colour times the material's diffuse; the paper's suggested values are the defaults.
+struct GoochTones {
+    float blue = 0.4f;
+    float yellow = 0.4f;
+    float alpha = 0.2f;
+    float beta = 0.6f;
 };
 
 // How to render: everything a command-line flag can override.
@@ -74,6 +87,8 @@ struct RenderSettings {
     bool cull_backfaces = false;
     int snap_bits = kDefaultSnapBits;
     glm::vec3 ambient_light{1.0f};  // multiplies every material's ambient term
+    int cel_bands = 4;              // cel: bands of n.l, in [1, 64]
+    GoochTones gooch;               // gooch: the tones
     PrecisionModes modes;           // edge arithmetic, interpolation, depth format, clipping, hierarchical Z
 };
 
@@ -84,6 +99,9 @@ struct Scene {
     std::vector<Light> lights;
     std::vector<SceneMesh> meshes;
 };
+
+// Whether any mesh has a textured material: the only scenes that read texture coordinates.
+bool has_textures(const Scene& scene);
 
 const char* to_string(ShadingMode mode);
 const char* to_string(SamplePattern pattern);

@@ -1,0 +1,89 @@
+// OBJ materials: usemtl runs to the mesh's material and parts (obj_materials.h).
+#include "raster/formats/obj_materials.h"
+
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+
+#include "raster/core/errors.h"
+#include "raster/texture/texture.h"
+
+namespace raster {
+
+namespace {
+
+struct FoundMaterial {
+    const MtlMaterial* material = nullptr;
+    std::filesystem::path library;
+};
+
+InputError located(const std::filesystem::path& file, int64_t line, const std::string& what, const InputError& error) {
+    return InputError(file.string(), static_cast<int>(std::min<int64_t>(line, INT32_MAX)), 0, what + ": " + error.what());
+}
+
+Material material_for(const FoundMaterial& found, const std::optional<Material>& coefficients,
+                      const MaterialSources& sources) {
+    Material material = coefficients.value_or(Material{});
+    if (!found.material) return material;
+    const MtlMaterial& mtl = *found.material;
+    material.name = mtl.name;
+    if (!coefficients) {
+        if (mtl.ambient) material.ambient = *mtl.ambient;
+        if (mtl.diffuse) material.diffuse = *mtl.diffuse;
+        if (mtl.specular) material.specular = *mtl.specular;
+        if (mtl.exponent) material.exponent = *mtl.exponent;
+    }
+    if (mtl.opacity && *mtl.opacity < 1.0f)
+        std::fprintf(stderr, "%s:%lld: warning: material '%s' has opacity %g; transparency is not drawn, so it is drawn opaque\n",
+                     found.library.string().c_str(), static_cast<long long>(mtl.line), mtl.name.c_str(), *mtl.opacity);
+    if (mtl.diffuse_map) {
+        const std::filesystem::path image = found.library.parent_path() / mtl.diffuse_map->file;
+        TextureBinding binding;
+        try {
+            binding.texture = sources.texture(image);
+            binding.path = binding.texture->path;
+        } catch (const InputError& error) {
+            throw located(found.library, mtl.diffuse_map->line, "map_Kd '" + mtl.diffuse_map->file + "'", error);
+        }
+        if (mtl.diffuse_map->clamp) binding.wrap = TextureWrap::clamp;
+        material.texture = binding;
+    }
+    return material;
+}
+
+}  // namespace
+
+void apply_obj_materials(SceneMesh& mesh, const std::filesystem::path& obj_path, const MaterialSources& sources,
+                         const std::optional<Material>& coefficients) {
+    const std::vector<MaterialRun>& runs = mesh.data.material_runs;
+    if (runs.empty()) return;
+    // The first library to define a name wins.
+    std::map<std::string, FoundMaterial> by_name;
+    for (const MaterialLibrary& library : mesh.data.material_libraries) {
+        const std::filesystem::path path = obj_path.parent_path() / library.file;
+        const std::vector<MtlMaterial>* materials = nullptr;
+        try {
+            materials = &sources.library(path);
+        } catch (const InputError& error) {
+            throw located(obj_path, library.line, "mtllib '" + library.file + "'", error);
+        }
+        for (const MtlMaterial& material : *materials) by_name.try_emplace(material.name, FoundMaterial{&material, path});
+    }
+    std::set<std::string> warned;
+    mesh.parts.clear();
+    for (const MaterialRun& run : runs) {
+        FoundMaterial found;
+        if (const auto it = by_name.find(run.name); it != by_name.end()) {
+            found = it->second;
+        } else if (!run.name.empty() && warned.insert(run.name).second) {
+            std::fprintf(stderr, "%s: warning: usemtl '%s' is not defined by the mesh's material libraries; its faces "
+                                 "get the default material\n", obj_path.string().c_str(), run.name.c_str());
+        }
+        Material material = material_for(found, coefficients, sources);
+        if (run.first_triangle == 0) mesh.material = std::move(material);
+        else mesh.parts.push_back({run.first_triangle, std::move(material)});
+    }
+}
+
+}  // namespace raster

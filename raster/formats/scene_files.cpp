@@ -1,0 +1,93 @@
+// A scene's files, each read once (scene_files.h).
+#include "raster/formats/scene_files.h"
+
+#include <cstdio>
+
+#include "raster/core/errors.h"
+#include "raster/core/file_io.h"
+#include "raster/formats/obj_materials.h"
+#include "raster/formats/scene_loader.h"
+#include "raster/texture/mip_chains.h"
+#include "raster/texture/texture.h"
+
+namespace raster {
+
+SceneFiles::SceneFiles(const std::filesystem::path& scene_path, const DocumentReader& reader)
+    : folder_(scene_path.parent_path()), reader_(reader) {}
+
+std::filesystem::path SceneFiles::resolve(const std::string& file) const {
+    std::filesystem::path path(file);
+    if (path.is_relative()) path = folder_ / path;
+    return path.lexically_normal();
+}
+
+const MeshData& SceneFiles::mesh(const Node& where, const std::string& file) {
+    const std::filesystem::path path = resolve(file);
+    auto& slot = meshes_[path.string()];
+    if (!slot) {
+        try {
+            slot = std::make_unique<MeshData>(load_mesh_file(path));
+        } catch (const InputError& error) {
+            // Say where the scene asked for the mesh, and what is wrong inside it.
+            reader_.fail(where, "in mesh '" + file + "': " + error.what());
+        }
+    }
+    return *slot;
+}
+
+const std::vector<MtlMaterial>& SceneFiles::library(const std::filesystem::path& path) {
+    const std::string key = path.lexically_normal().string();
+    if (const auto it = libraries_.find(key); it != libraries_.end()) return it->second;
+    std::vector<MtlMaterial> materials = parse_mtl(read_file_bytes(path, uint64_t{1} << 28), key);
+    return libraries_.emplace(key, std::move(materials)).first->second;
+}
+
+std::shared_ptr<const Texture> SceneFiles::texture(const std::filesystem::path& path) {
+    auto& slot = textures_[path.lexically_normal().string()];
+    if (!slot) slot = std::make_shared<const Texture>(load_texture(path.lexically_normal()));
+    return slot;
+}
+
+SceneFileLoaders SceneFiles::loaders() {
+    SceneFileLoaders files;
+    files.mesh = [this](const Node& where, const std::string& file) -> const MeshData& { return mesh(where, file); };
+    files.obj_materials = [this](const Node& where, const std::string& file, SceneMesh& target,
+                                 const std::optional<Material>& coefficients) {
+        MaterialSources sources;
+        sources.library = [this](const std::filesystem::path& path) -> const std::vector<MtlMaterial>& {
+            return library(path);
+        };
+        sources.texture = [this](const std::filesystem::path& path) { return texture(path); };
+        try {
+            apply_obj_materials(target, resolve(file), sources, coefficients);
+        } catch (const InputError& error) {
+            reader_.fail(where, "in mesh '" + file + "': " + error.what());
+        }
+    };
+    files.texture = [this](const Node& where, const std::string& file) {
+        try {
+            return texture(resolve(file));
+        } catch (const InputError& error) {
+            reader_.fail(where, error.what());
+        }
+    };
+    return files;
+}
+
+void finish_scene_textures(Scene& scene) {
+    for (SceneMesh& mesh : scene.meshes) {
+        bool textured = false;
+        for_each_material(mesh, [&](const Material& m) { textured = textured || m.texture.has_value(); });
+        if (!textured) {
+            mesh.data.corner_uvs = {};
+        } else if (mesh.data.corner_uvs.empty()) {
+            std::fprintf(stderr, "%s: warning: mesh '%s' has a textured material but no texture coordinates on every "
+                                 "corner; it is drawn untextured\n", scene.path.c_str(), mesh.source.c_str());
+            mesh.material.texture.reset();
+            for (MaterialPart& part : mesh.parts) part.material.texture.reset();
+        }
+    }
+    build_needed_mip_chains(scene);
+}
+
+}  // namespace raster

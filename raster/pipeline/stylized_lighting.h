@@ -1,0 +1,32 @@
+// Non-photorealistic lighting: cel (toon) bands and Gooch et al.'s cool-to-warm tones, in the same
+// base * diffuse + specular form as Blinn-Phong, so a texture or vertex colour multiplies them alike.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "raster/pipeline/shade.h"
+#include "raster/scene/scene.h"
+
+namespace raster {
+
+// n.l in (0, 1] to its band: ceil(n.l bands) / bands, so the band edges sit at n.l = k / bands, a lit point is
+// at least 1 / bands bright and a point facing the light is at full strength.
+float cel_band(float n_dot_l, int bands);
+
+// Cel: ambient, plus per light its diffuse at the banded n.l, plus a hard-edged highlight: the light's specular in
+// full where Blinn's (n.h)^exponent >= 1/2, none elsewhere. No outlines.
+LightingTerms evaluate_cel_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
+                                    const Material& material, const std::vector<Light>& lights,
+                                    const glm::vec3& ambient_light, int bands);
+
+// Gooch: with t = (1 + n.l) / 2 toward the scene's first light (t = 1/2 with no light, n.l not clamped),
+//   colour = t k_warm + (1 - t) k_cool + the first light's Blinn highlight
+// (GoochTones in scene.h), which is base * diffuse (alpha + t (beta - alpha)) + t (y, y, 0) + (1 - t) (0, 0, b)
+// + specular. No ambient term: the tones take its place. Light colour and intensity scale only the highlight.
+LightingTerms evaluate_gooch_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
+                                      const Material& material, const std::vector<Light>& lights,
+                                      const GoochTones& tones);
+
+}  // namespace raster

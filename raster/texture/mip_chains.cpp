@@ -1,0 +1,47 @@
+// Mip chains for a scene's textures (mip_chains.h).
+#include "raster/texture/mip_chains.h"
+
+#include <map>
+#include <memory>
+
+#include "raster/texture/texture.h"
+
+namespace raster {
+
+namespace {
+
+template <typename Visit>
+void for_each_material(Scene& scene, Visit visit) {
+    for (SceneMesh& mesh : scene.meshes) {
+        visit(mesh.material);
+        for (MaterialPart& part : mesh.parts) visit(part.material);
+    }
+}
+
+}  // namespace
+
+void build_needed_mip_chains(Scene& scene) {
+    std::map<const Texture*, std::shared_ptr<const Texture>> built;
+    for_each_material(scene, [&](Material& material) {
+        if (!material.texture || !uses_mip_chain(material.texture->filter)) return;
+        std::shared_ptr<const Texture>& texture = material.texture->texture;
+        const TextureLevel& base = texture->levels.front();
+        if (static_cast<int>(texture->levels.size()) == mip_level_count(base.width, base.height)) return;
+        auto& slot = built[texture.get()];
+        if (!slot) {
+            auto full = std::make_shared<Texture>(*texture);
+            build_mip_chain(*full);
+            slot = std::move(full);
+        }
+        texture = slot;
+    });
+}
+
+void set_texture_filter(Scene& scene, TextureFilter filter) {
+    for_each_material(scene, [&](Material& material) {
+        if (material.texture) material.texture->filter = filter;
+    });
+    build_needed_mip_chains(scene);
+}
+
+}  // namespace raster
