@@ -3,6 +3,7 @@
 
 #include "raster/core/errors.h"
 #include "raster/scene/validation.h"
+#include "raster/texture/mip_chains.h"
 
 namespace raster::cli {
 
@@ -11,8 +12,13 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
     command.add_option("--pattern", flags.pattern, "Sample pattern: standard (Vulkan positions) or grid (N x N)")
         ->check(CLI::IsMember({"standard", "grid"}));
     command.add_flag("--msaa", flags.msaa, "Shade once per pixel per triangle (MSAA) instead of every sample (SSAA)");
-    command.add_option("--shading", flags.shading, "Shading: unlit, flat, gouraud, phong or blinn-phong")
-        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "phong", "blinn-phong"}));
+    command.add_option("--shading", flags.shading, "Shading: unlit, flat, gouraud, phong, blinn-phong, cel or gooch")
+        ->check(CLI::IsMember({"unlit", "flat", "gouraud", "phong", "blinn-phong", "cel", "gooch"}));
+    command.add_option("--cel-bands", flags.cel_bands, "Cel shading: bands of n.l, 1..64 (default 4)")
+        ->check(CLI::Range(1, 64));
+    command.add_option("--filter", flags.filter,
+                       "Texture filter for every textured material: nearest, bilinear, trilinear or anisotropic")
+        ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "anisotropic"}));
     command.add_option("--snap-bits", flags.snap_bits, "Sub-pixel bits for vertex snapping, 1..16 (default 8)");
     command.add_option("--cull", flags.cull, "Back-face culling: none or back")->check(CLI::IsMember({"none", "back"}));
     command.add_option("--edges", flags.edges, "Edge arithmetic: fixed (64-bit, watertight; default) or float")
@@ -38,6 +44,12 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     if (flags.pattern) parse_sample_pattern(*flags.pattern, settings.pattern);
     if (flags.msaa) settings.msaa = true;
     if (flags.shading) parse_shading_mode(*flags.shading, settings.shading);
+    if (flags.cel_bands) settings.cel_bands = *flags.cel_bands;
+    if (flags.filter) {
+        TextureFilter filter = TextureFilter::trilinear;
+        parse_texture_filter(*flags.filter, filter);
+        set_texture_filter(scene, filter);
+    }
     if (flags.snap_bits) settings.snap_bits = *flags.snap_bits;
     if (flags.cull) settings.cull_backfaces = *flags.cull == "back";
     if (flags.edges) parse_edge_arithmetic(*flags.edges, settings.modes.edges);

@@ -16,6 +16,8 @@ struct SettingsFlags {
     std::optional<std::string> pattern;
     bool msaa = false;
     std::optional<std::string> shading;
+    std::optional<int> cel_bands;
+    std::optional<std::string> filter;  // every textured material's
     std::optional<int> snap_bits;
     std::optional<std::string> cull;
     std::optional<std::string> edges, interpolation, depth_format, clipping, hierarchical_z;
@@ -23,7 +25,7 @@ struct SettingsFlags {
     int threads = 0;
 };
 
-// Adds --samples, --pattern, --msaa, --shading, --snap-bits, --cull, the precision modes, --alpha and --threads.
+// Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, --alpha and --threads.
 void register_settings_flags(CLI::App& command, SettingsFlags& flags);
 
 // Applies the flags given to the scene's settings; throws InputError when the result is not a valid frame.
