@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the corpus's texture images (corpus/textures/, corpus/seeds/003/), so they can be remade and reviewed.
+"""Writes the corpus's texture images (corpus/textures/, corpus/seeds/003/) and the checkerboard floor's grid mesh
+(corpus/meshes/checker_floor.obj), so they can be remade and reviewed.
 
 Each is asymmetric in u and in v, so a texture drawn mirrored or upside down differs from the right one.
 """
@@ -58,12 +59,36 @@ def crate(width, height):
     return pixel
 
 
+def floor_obj(path, cells_x=16, cells_z=20, size=10.0, x0=-80.0, z0=6.0):
+    """A grid of square cells on y = 0, from (x0, z0) towards -z, with u = (x - x0) / 4 and v = (z0 - z) / 4.
+
+    A grid rather than one big quad: small triangles are not clipped by the near plane, so their barycentrics (and
+    so their texture coordinates) keep the tight bounds of unclipped triangles."""
+    lines = ["# The checkerboard floor of checker_floor.yaml: %d x %d cells of %g units, written by "
+             "tools/make_textures.py." % (cells_x, cells_z, size)]
+    for j in range(cells_z + 1):
+        for i in range(cells_x + 1):
+            x, z = x0 + i * size, z0 - j * size
+            lines.append("v %g 0 %g" % (x, z))
+            lines.append("vt %g %g" % ((x - x0) / 4.0, (z0 - z) / 4.0))
+    lines.append("vn 0 1 0")
+    row = cells_x + 1
+    for j in range(cells_z):
+        for i in range(cells_x):
+            a = j * row + i + 1
+            b, c, d = a + 1, a + row + 1, a + row
+            lines.append("f %d/%d/1 %d/%d/1 %d/%d/1 %d/%d/1" % (a, a, b, b, c, c, d, d))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 def main():
     out = os.path.join(ROOT, "corpus", "textures")
     os.makedirs(out, exist_ok=True)
-    write_png(os.path.join(out, "checker.png"), 256, 256, checker(8, 256))
+    write_png(os.path.join(out, "checker.png"), 240, 240, checker(8, 240))  # not a power of two either
     write_png(os.path.join(out, "crate.png"), 120, 90, crate(120, 90))  # not a power of two
     write_ppm(os.path.join(ROOT, "corpus", "seeds", "003", "checker.ppm"), 64, 64, checker(4, 64))
+    floor_obj(os.path.join(ROOT, "corpus", "meshes", "checker_floor.obj"))
     return 0
 
 

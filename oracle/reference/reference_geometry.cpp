@@ -129,6 +129,20 @@ glm::dmat4 absolute(const glm::dmat4& m) {
 
 }  // namespace
 
+ClipBound original_clip_vertex(const Scene& scene, const OracleScene& geometry, uint32_t id, int corner) {
+    const OracleTriangle& triangle = geometry.triangles[id];
+    const uint32_t vertex = triangle.vertex[corner];
+    const glm::dmat4& projection = geometry.camera.projection;
+    const glm::dmat4 magnitude_chain =
+        absolute(projection) * absolute(geometry.camera.view) * absolute(glm::dmat4(scene.meshes[triangle.mesh].model));
+    const glm::dvec4 p{glm::dvec3(scene.meshes[triangle.mesh].data.positions[vertex - geometry.mesh_first_vertex[triangle.mesh]]), 1.0};
+    ClipBound bound;
+    bound.clip = projection * glm::dvec4(geometry.view[vertex], 1.0);
+    bound.magnitudes = magnitude_chain * glm::abs(p);
+    bound.error = vertex_error(bound.magnitudes) + camera_clip_error(geometry.camera_error, geometry.camera, geometry.world[vertex]);
+    return bound;
+}
+
 double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b) {
     const glm::dvec2 d = b - a, o = a - p;  // the offset from p at t is o + t d
     auto at = [&](double t) {
@@ -147,7 +161,6 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
     : camera_(geometry.camera),
       near_(scene.camera.near),
       far_(scene.camera.far) {
-    const glm::dmat4& projection = camera_.projection;
     const glm::dmat4 view_magnitude = absolute(camera_.view);
     const size_t triangle_count = geometry.triangles.size();
     triangles_.resize(triangle_count);
@@ -160,7 +173,6 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
         const OracleTriangle& triangle = geometry.triangles[id];
         const glm::dmat4 model(scene.meshes[triangle.mesh].model);
         const glm::dmat4 view_magnitude_chain = view_magnitude * absolute(model);
-        const glm::dmat4 magnitude_chain = absolute(projection) * view_magnitude_chain;
         const auto& positions = scene.meshes[triangle.mesh].data.positions;
         const uint32_t first_vertex = geometry.mesh_first_vertex[triangle.mesh];
         std::vector<ClipVertex> polygon(3);
@@ -173,10 +185,10 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
             const glm::dvec3 view_magnitude_k = glm::dvec3(view_magnitude_chain * glm::abs(p));
             vertex_magnitude = std::max(vertex_magnitude, glm::length(view_magnitude_k));
             oracle_error[k] = float_gamma(kOracleTransformRoundings) * view_magnitude_k;
-            polygon[k].clip = projection * glm::dvec4(view_vertex[k], 1.0);
-            polygon[k].magnitudes = magnitude_chain * glm::abs(p);
-            polygon[k].error = vertex_error(polygon[k].magnitudes) +
-                               camera_clip_error(geometry.camera_error, camera_, geometry.world[vertex]);
+            const ClipBound bound = original_clip_vertex(scene, geometry, id, k);
+            polygon[k].clip = bound.clip;
+            polygon[k].magnitudes = bound.magnitudes;
+            polygon[k].error = bound.error;
             polygon[k].outgoing = EdgeKind::triangle;
         }
         const glm::dvec3 edge1 = view_vertex[1] - view_vertex[0], edge2 = view_vertex[2] - view_vertex[0];

@@ -109,6 +109,13 @@ private:
     std::vector<EdgeKind> edge_kinds_;
 };
 
+// An original vertex of a triangle in clip space: the oracle's exact position, its magnitudes |P||V||M||(p, 1)|, and
+// how far raster's float clip position can be from it (precision.h section 2 and camera_precision.h).
+struct ClipBound {
+    glm::dvec4 clip{0.0}, magnitudes{0.0}, error{0.0};
+};
+ClipBound original_clip_vertex(const Scene& scene, const OracleScene& geometry, uint32_t triangle, int corner);
+
 // Max-norm distance from point p to the segment [a, b]: min over t in [0, 1] of max(|dx(t)|, |dy(t)|). That is a
 // convex piecewise-linear function of t, so its minimum is at an end or where one term is 0 or the two are equal.
 double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b);

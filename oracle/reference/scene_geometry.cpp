@@ -16,7 +16,8 @@ glm::dvec3 unit_or_zero(const glm::dvec3& v) {
 
 bool needs_world(ShadingMode mode) { return mode != ShadingMode::unlit; }
 bool needs_normals(ShadingMode mode) {
-    return mode == ShadingMode::gouraud || mode == ShadingMode::phong || mode == ShadingMode::blinn_phong;
+    return mode == ShadingMode::gouraud || mode == ShadingMode::phong || mode == ShadingMode::blinn_phong ||
+           mode == ShadingMode::cel || mode == ShadingMode::gooch;
 }
 
 // The vertex normals of one mesh and raster's error bounds for them.
@@ -48,6 +49,14 @@ void mesh_normals(const SceneMesh& mesh, uint32_t first, OracleScene& out) {
 }
 
 }  // namespace
+
+const Material& triangle_material(const Scene& scene, const OracleTriangle& triangle) {
+    const SceneMesh& mesh = scene.meshes[triangle.mesh];
+    const Material* material = &mesh.material;
+    for (const MaterialPart& part : mesh.parts)
+        if (part.first_triangle <= triangle.local) material = &part.material;
+    return *material;
+}
 
 OracleScene oracle_scene(const Scene& scene) {
     OracleScene out;

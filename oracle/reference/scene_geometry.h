@@ -30,10 +30,14 @@ struct OracleScene {
     std::vector<glm::dvec3> view;        // per vertex: the camera's view of `world`
     // Lit shading modes only (empty for unlit):
     std::vector<glm::dvec3> world_error;   // per vertex: raster's float world position, per component
-    // Modes with vertex normals only (Gouraud, Phong, Blinn-Phong):
+    // Modes with vertex normals only (Gouraud, Phong, Blinn-Phong, cel, Gooch):
     std::vector<glm::dvec3> normal;        // per vertex: the unit normal (zero where none is defined)
     std::vector<double> normal_error;      // per vertex: how far raster's unit normal can be (2-norm)
 };
+
+// The material of a triangle, read by the oracle itself from the mesh's parts: the last part that starts at or
+// before the triangle, else the mesh's own material.
+const Material& triangle_material(const Scene& scene, const OracleTriangle& triangle);
 
 // Normals, as the README defines them: a file's normals by the inverse transpose of the model matrix, renormalised;
 // without them, the normalised mean of the unit normals of the vertex's faces in world space (degenerate faces

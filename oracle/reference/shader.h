@@ -10,13 +10,22 @@
 //   the material colour. Unlit: base. Flat: lit once at the centroid with the face normal. Gouraud: lit at each
 //   vertex, colours interpolated. Phong, Blinn-Phong: lit at the sample, the normal interpolated and renormalised.
 //   Lighting is in world space: light positions and the eye are world points, v and l point from the surface.
+//   Cel: n.l in the diffuse term replaced by ceil(n.l N) / N, the highlight by the light's full specular where
+//   s >= 1/2 and none elsewhere. Gooch: t = (1 + n.l) / 2 to the first light (1/2 without one), colour =
+//   base diffuse (alpha + t (beta - alpha)) + t (y, y, 0) + (1 - t) (0, 0, b) + the first light's Blinn highlight.
+//   Near a band's edge or the highlight's threshold the interval holds both sides: either is correct there.
+//   Textures (README "Textures"): the texture's value multiplies the base colour, and for Gouraud and flat the lit
+//   base * diffuse but not the highlight: colour = T (base * diffuse) + specular.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
+#include <memory>
+
 #include "oracle/reference/interval.h"
 #include "oracle/reference/scene_geometry.h"
+#include "oracle/reference/texture_sampling.h"
 #include "raster/scene/scene.h"
 
 namespace raster::oracle {
@@ -34,7 +43,16 @@ private:
         Interval3 diffuse;   // ambient included
         Interval3 specular;
     };
-    LitTerms light(const Interval3& position, const Interval3& normal, const Material& material, bool phong) const;
+    // Which lobe and diffuse factor light() evaluates.
+    enum class Model { blinn, phong, cel };
+    // Over `light_count` lights from the first (all of them unless Gooch's key light alone is wanted).
+    LitTerms light(const Interval3& position, const Interval3& normal, const Material& material, Model model,
+                   size_t light_count) const;
+    double cel_band(double n_dot_l) const;  // ceil(n.l N) / N, 0 where n.l <= 0
+    LitTerms gooch(const Interval3& position, const Interval3& normal, const Material& material) const;
+    // The texture's value box when the triangle's material has a texture.
+    bool texture(uint32_t id, const Interval3& bary, Interval3& value) const;
+    const LitTerms& corner_terms(uint32_t id, int corner) const;
     Interval3 base_color(uint32_t id, const Interval3& bary) const;
     // A vertex's world position and unit normal as boxes that hold raster's float versions.
     Interval3 position_box(uint32_t vertex) const;
@@ -43,8 +61,11 @@ private:
 
     const Scene& scene_;
     const OracleScene& geometry_;
-    std::vector<LitTerms> vertex_terms_;  // Gouraud: per vertex
-    std::vector<Interval3> face_color_;   // flat: per triangle
+    bool per_corner_ = false;             // a mesh has several materials: Gouraud terms per triangle corner
+    std::vector<LitTerms> vertex_terms_;  // Gouraud: per vertex, or per corner (3 id + k)
+    std::vector<Interval3> face_color_;   // flat: per triangle, base * diffuse + specular
+    std::vector<LitTerms> face_terms_;    // flat with textures: per triangle, base * diffuse and specular
+    std::unique_ptr<OracleTextureSampling> textures_;  // textured scenes only
 };
 
 }  // namespace raster::oracle

@@ -60,6 +60,11 @@ inline constexpr int kRadianceRoundings = 3;
 inline constexpr int kTermRoundings = 2;
 inline constexpr int kPowerRoundings = 16;
 inline constexpr int kCombineRoundings = 2;
+//  - Gooch: t = 0.5 (1 + n.l) (2 roundings), alpha + t (beta - alpha) (3), times the diffuse (1), and the tones
+//    highlight + t (y, y, 0) + (1 - t) (0, 0, b) (two products, 1 - t and two sums: 5), relative.
+inline constexpr int kGoochTiltRoundings = 2;
+inline constexpr int kGoochBlendRoundings = 3;
+inline constexpr int kGoochToneRoundings = 5;
 
 // `value` widened by k float roundings relative to its own magnitude.
 Interval after_roundings(Interval value, int k);

@@ -47,6 +47,12 @@ float blinn_lobe(const glm::vec3& normal, const glm::vec3& to_light, const glm::
     return lobe;
 }
 
+float highlight_of(float lobe, float exponent) {
+    // lobe^exponent with max(0, lobe); pow is skipped where it is 0 (and 0^0 = 1 kept for exponent 0).
+    const float highlight = lobe > 0.0f ? specular_power(lobe, exponent) : (exponent == 0.0f ? 1.0f : 0.0f);
+    return highlight;
+}
+
 LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
                                 const Material& material, const std::vector<Light>& lights,
                                 const glm::vec3& ambient_light, SpecularModel model) {
@@ -64,9 +70,7 @@ LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& norm
             lobe = glm::dot(reflected, to_eye);
         }
         terms.diffuse += radiance * material.diffuse * n_dot_l;
-        // lobe^exponent with max(0, lobe); pow is skipped where it is 0 (and 0^0 = 1 kept for exponent 0).
-        const float highlight = lobe > 0.0f ? specular_power(lobe, material.exponent) : (material.exponent == 0.0f ? 1.0f : 0.0f);
-        terms.specular += radiance * material.specular * highlight;
+        terms.specular += radiance * material.specular * highlight_of(lobe, material.exponent);
     }
     return terms;
 }

@@ -36,6 +36,9 @@ bool light_arrives(const Light& light, const glm::vec3& position, const glm::vec
 // opposite).
 float blinn_lobe(const glm::vec3& normal, const glm::vec3& to_light, const glm::vec3& to_eye);
 
+// The highlight max(0, lobe)^exponent, with 0^0 = 1 (an exponent of 0 lights every point fully).
+float highlight_of(float lobe, float exponent);
+
 // Ambient plus, for each light, Lambert diffuse and a specular lobe, with optional 1/r^2 attenuation. Lighting is
 // one-sided: a light behind the surface (n.l <= 0) adds nothing. `normal` must be unit length; `to_eye` is the
 // unit vector from the point to the eye.

@@ -42,7 +42,7 @@ LightingTerms evaluate_gooch_lighting(const glm::vec3& position, const glm::vec3
         LightArrival arrival;
         if (light_arrives(key, position, normal, arrival)) {
             const float lobe = blinn_lobe(normal, arrival.to_light, to_eye);
-            if (lobe > 0.0f) terms.specular = arrival.radiance * material.specular * specular_power(lobe, material.exponent);
+            terms.specular = arrival.radiance * material.specular * highlight_of(lobe, material.exponent);
         }
     }
     terms.diffuse = material.diffuse * (tones.alpha + t * (tones.beta - tones.alpha));

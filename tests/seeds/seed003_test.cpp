@@ -91,5 +91,21 @@ TEST(Seed003, mysceneHasSeveralMeshesAndLightsAndItsPpm) {
     EXPECT_EQ(artefact.height, scene.settings.height);
 }
 
+// The document's texture extra: an OBJ with texture coordinates whose material names a PPM image, and the PPM the
+// scene renders to. (The oracle comparison of the scene is in tests/harness/compare_corpus_test.cpp.)
+TEST(Seed003, texturedSceneTakesItsTextureFromTheObjsMaterialAndHasItsPpm) {
+    const Scene scene = load_scene(corpus("seeds/003/textured.json"));
+    ASSERT_EQ(scene.meshes.size(), 2u);
+    const Material& crate = scene.meshes[1].material;
+    ASSERT_TRUE(crate.texture.has_value());
+    EXPECT_EQ(fs::path(crate.texture->path).filename(), "checker.ppm");
+    EXPECT_EQ(crate.diffuse, glm::vec3(0.8f));  // the scene's coefficients, not the MTL's Kd 1
+    EXPECT_EQ(scene.meshes[1].data.corner_uvs.size(), scene.meshes[1].data.triangles.size());
+    EXPECT_TRUE(scene.meshes[0].data.corner_uvs.empty());  // the untextured floor keeps none
+    const Pixels artefact = read_pnm(corpus("seeds/003/textured.ppm"));
+    EXPECT_EQ(artefact.width, scene.settings.width);
+    EXPECT_EQ(artefact.height, scene.settings.height);
+}
+
 }  // namespace
 }  // namespace raster

@@ -1,0 +1,49 @@
+// The oracle's textures: each image decoded on its own from the file the scene names (its own stb_image copy),
+// held in double, with its own mip chain, so no texel the oracle compares comes from raster's texture code.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "raster/scene/scene.h"
+
+namespace raster::oracle {
+
+struct OracleTextureLevel {
+    int width = 0, height = 0;
+    std::vector<glm::dvec3> texels;  // row 0 is the image's top row
+    glm::dvec3 min{0.0}, max{0.0};   // over the level, per channel
+    const glm::dvec3& texel(int x, int y) const { return texels[static_cast<size_t>(y) * width + x]; }
+};
+
+// Every level of a texture (README "Textures"): level 0 has the image's values, code / 255 (or / 65535), exactly;
+// level k + 1 is max(1, floor(w / 2)) x max(1, floor(h / 2)) and each of its texels is the mean of level k over the
+// texel's footprint, a rectangle of w / w' by h / h' level-k texels, texels cut by its sides counting by the part
+// inside.
+struct OracleTexture {
+    std::string path;
+    std::vector<OracleTextureLevel> levels;
+};
+
+// Decodes `path` (throws std::runtime_error when it cannot; raster loaded it, so that is a broken file system).
+OracleTexture load_oracle_texture(const std::string& path);
+
+// The level below `level`, by the rule above.
+OracleTextureLevel next_oracle_level(const OracleTextureLevel& level);
+
+// The scene's textures, one per distinct image file, for the materials that have one.
+class OracleTextures {
+public:
+    explicit OracleTextures(const Scene& scene);
+    // The texture of a textured binding.
+    const OracleTexture& of(const TextureBinding& binding) const { return *by_path_.at(binding.path); }
+
+private:
+    std::map<std::string, std::shared_ptr<const OracleTexture>> by_path_;
+};
+
+}  // namespace raster::oracle

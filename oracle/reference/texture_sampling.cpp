@@ -1,0 +1,101 @@
+// The oracle's texture lookups (texture_sampling.h).
+#include "oracle/reference/texture_sampling.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "oracle/reference/precision.h"
+#include "oracle/reference/reference_geometry.h"
+#include "oracle/reference/texture_filters.h"
+
+namespace raster::oracle {
+
+UvDerivatives ray_differential(const OracleCamera& camera, const glm::dvec3 view[3], const glm::dvec2 uv[3],
+                               const glm::dvec3& bary) {
+    const glm::dvec3 e1 = view[1] - view[0], e2 = view[2] - view[0];
+    const glm::dvec3 n = glm::cross(e1, e2);
+    const double n2 = glm::dot(n, n);
+    const glm::dvec3 p = bary.x * view[0] + bary.y * view[1] + bary.z * view[2];
+    const double t = -p.z;              // view depth: the ray is D = P / t, with D.z = -1
+    const glm::dvec3 direction = p / t;
+    // A pixel step right moves the view-space direction by 2 aspect / (focal width) in x; a step down by
+    // -2 / (focal height) in y (ndc y points up, pixel y down).
+    const glm::dvec3 step_x(2.0 * camera.aspect / (camera.focal * camera.width), 0.0, 0.0);
+    const glm::dvec3 step_y(0.0, -2.0 / (camera.focal * camera.height), 0.0);
+    auto bary_step = [&](const glm::dvec3& d_direction) {
+        const glm::dvec3 dp = t * (d_direction - direction * (glm::dot(n, d_direction) / glm::dot(n, direction)));
+        const double b1 = glm::dot(glm::cross(dp, e2), n) / n2, b2 = glm::dot(glm::cross(e1, dp), n) / n2;
+        return glm::dvec3(-(b1 + b2), b1, b2);
+    };
+    UvDerivatives out;
+    out.dbary_dx = bary_step(step_x);
+    out.dbary_dy = bary_step(step_y);
+    for (int i = 0; i < 3; ++i) {
+        out.uv += bary[i] * uv[i];
+        out.d_dx += out.dbary_dx[i] * uv[i];
+        out.d_dy += out.dbary_dy[i] * uv[i];
+    }
+    return out;
+}
+
+OracleTextureSampling::OracleTextureSampling(const Scene& scene, const OracleScene& geometry)
+    : geometry_(geometry), textures_(scene) {
+    triangles_.resize(geometry.triangles.size());
+    for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
+        const OracleTriangle& t = geometry.triangles[id];
+        const SceneMesh& mesh = scene.meshes[t.mesh];
+        if (!triangle_material(scene, t).texture || mesh.data.corner_uvs.empty()) continue;
+        Triangle& out = triangles_[id];
+        out.error.width = scene.settings.width;
+        out.error.height = scene.settings.height;
+        for (int k = 0; k < 3; ++k) {
+            out.view[k] = geometry.view[t.vertex[k]];
+            out.uv[k] = glm::dvec2(mesh.data.corner_uvs[t.local].uv[k]);
+            const ClipBound bound = original_clip_vertex(scene, geometry, id, k);
+            out.error.clip[k] = bound.clip;
+            out.error.clip_error[k] = bound.error;
+        }
+    }
+}
+
+Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const Interval3& bary) const {
+    const Triangle& t = triangles_[id];
+    glm::dvec3 middle, half;
+    for (int i = 0; i < 3; ++i) {
+        middle[i] = 0.5 * (bary[i].lo + bary[i].hi);
+        half[i] = 0.5 * (bary[i].hi - bary[i].lo);
+    }
+    const glm::dvec3 on_plane = middle / (middle.x + middle.y + middle.z);
+    const UvDerivatives exact = ray_differential(geometry_.camera, t.view, t.uv, on_plane);
+    half += glm::abs(on_plane - middle);
+    const GradientError gradient = gradient_error(t.error, on_plane, half);
+    TextureFootprintBox box;
+    // u and v over the barycentric box, with raster's interpolation rounding (gamma_3 of sum |b_i| |uv_i|).
+    Interval u = bary.x * Interval(t.uv[0].x) + bary.y * Interval(t.uv[1].x) + bary.z * Interval(t.uv[2].x);
+    Interval v = bary.x * Interval(t.uv[0].y) + bary.y * Interval(t.uv[1].y) + bary.z * Interval(t.uv[2].y);
+    double magnitude_u = 0.0, magnitude_v = 0.0;
+    glm::dvec2 error_dx(0.0), error_dy(0.0), magnitude_dx(0.0), magnitude_dy(0.0);
+    for (int i = 0; i < 3; ++i) {
+        magnitude_u += bary[i].magnitude() * std::fabs(t.uv[i].x);
+        magnitude_v += bary[i].magnitude() * std::fabs(t.uv[i].y);
+        error_dx += gradient.x[i] * glm::abs(t.uv[i]);
+        error_dy += gradient.y[i] * glm::abs(t.uv[i]);
+        magnitude_dx += std::fabs(exact.dbary_dx[i]) * glm::abs(t.uv[i]);
+        magnitude_dy += std::fabs(exact.dbary_dy[i]) * glm::abs(t.uv[i]);
+    }
+    const double rounding = float_gamma(kUvDerivativeRoundings);
+    box.uv = {u.widened(float_gamma(3) * magnitude_u), v.widened(float_gamma(3) * magnitude_v)};
+    box.d_dx = {Interval(exact.d_dx.x).widened(error_dx.x + rounding * (magnitude_dx.x + error_dx.x)),
+                Interval(exact.d_dx.y).widened(error_dx.y + rounding * (magnitude_dx.y + error_dx.y))};
+    box.d_dy = {Interval(exact.d_dy.x).widened(error_dy.x + rounding * (magnitude_dy.x + error_dy.x)),
+                Interval(exact.d_dy.y).widened(error_dy.y + rounding * (magnitude_dy.y + error_dy.y))};
+    auto finite_box = [](const UvBox& b) {
+        return std::isfinite(b.u.lo) && std::isfinite(b.u.hi) && std::isfinite(b.v.lo) && std::isfinite(b.v.hi);
+    };
+    if (!finite_box(box.d_dx) || !finite_box(box.d_dy))
+        box.d_dx = box.d_dy = {Interval::everything(), Interval::everything()};
+    return filtered_over(textures_.of(*material.texture), *material.texture, box);
+}
+
+}  // namespace raster::oracle
