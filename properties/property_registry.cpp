@@ -14,7 +14,8 @@ namespace {
 // from build to build. A new suite is added here.
 const char* const kSuiteOrder[] = {
     "Watertight", "Coverage", "FillRule", "Barycentrics", "Depth", "ViewMatrix", "Projection", "Matrices",
-    "ModelMatrix", "NormalMatrix", "Clip", "Sampling", "Extremes", "Lighting",
+    "ModelMatrix", "NormalMatrix", "Clip", "Sampling", "Extremes", "Lighting", "MipChain", "Wrap", "Trilinear",
+    "LevelOfDetail", "Texture",
 };
 
 // A function's static, so that it exists before the first RASTER_PROPERTY of any source registers into it.
