@@ -67,7 +67,7 @@ void skip_element(Reader& r, const Element& e) {
 }
 
 template <class Reader>
-void read_vertices(Reader& r, const Element& e, size_t reserve, MeshData& mesh) {
+void read_vertices(Reader& r, const Element& e, size_t reserve, MeshData& mesh, std::vector<glm::vec2>& uvs) {
     const bool has_colour = std::any_of(e.properties.begin(), e.properties.end(),
                                         [](const Property& p) { return p.role == Role::Red; });
     const bool has_normal = std::any_of(e.properties.begin(), e.properties.end(),
@@ -75,9 +75,13 @@ void read_vertices(Reader& r, const Element& e, size_t reserve, MeshData& mesh) 
     mesh.positions.reserve(reserve);
     if (has_colour) mesh.colors.reserve(reserve);
     if (has_normal) mesh.normals.reserve(reserve);
+    const bool has_uv = std::any_of(e.properties.begin(), e.properties.end(),
+                                    [](const Property& p) { return p.role == Role::U; });
+    if (has_uv) uvs.reserve(reserve);
     for (uint64_t i = 0; i < e.count; ++i) {
         r.begin_instance(e, i);
         glm::vec3 position(0.0f), normal(0.0f), colour(0.0f);
+        glm::vec2 uv(0.0f);
         for (const Property& p : e.properties) {
             if (p.is_list) {
                 r.skip_list_items(p.type, read_list_count(r, p.count_type));
@@ -91,6 +95,8 @@ void read_vertices(Reader& r, const Element& e, size_t reserve, MeshData& mesh) 
                 case Role::NX: normal.x = finite_float(r, v, "normal nx"); break;
                 case Role::NY: normal.y = finite_float(r, v, "normal ny"); break;
                 case Role::NZ: normal.z = finite_float(r, v, "normal nz"); break;
+                case Role::U: uv.x = finite_float(r, v, "texture coordinate u"); break;
+                case Role::V: uv.y = finite_float(r, v, "texture coordinate v"); break;
                 case Role::Red: colour.x = colour_channel(r, v, p.type); break;
                 case Role::Green: colour.y = colour_channel(r, v, p.type); break;
                 case Role::Blue: colour.z = colour_channel(r, v, p.type); break;
@@ -101,6 +107,7 @@ void read_vertices(Reader& r, const Element& e, size_t reserve, MeshData& mesh) 
         mesh.positions.push_back(position);
         if (has_colour) mesh.colors.push_back(colour);
         if (has_normal) mesh.normals.push_back(normal);
+        if (has_uv) uvs.push_back(uv);
     }
 }
 
@@ -163,17 +170,24 @@ void read_elements(Reader& r, const Header& header, size_t body_size, MeshData& 
     uint64_t vertex_count = 0;
     for (const Element& e : header.elements)
         if (e.name == "vertex") vertex_count = e.count;
+    std::vector<glm::vec2> vertex_uvs;
     for (const Element& e : header.elements) {
         const uint64_t min_bytes = std::max<uint64_t>(1, min_instance_bytes(e, header.format));
         const auto reserve = static_cast<size_t>(std::min<uint64_t>(e.count, (uint64_t{body_size} + 1) / min_bytes));
         if (e.name == "vertex")
-            read_vertices(r, e, reserve, mesh);
+            read_vertices(r, e, reserve, mesh, vertex_uvs);
         else if (e.name == "face")
             read_faces(r, e, vertex_count, reserve, mesh);
         else
             skip_element(r, e);
     }
     r.finish();
+    // Per-vertex texture coordinates become each triangle's corners' (MeshData keeps them per corner, as OBJ has them).
+    if (!vertex_uvs.empty()) {
+        mesh.corner_uvs.reserve(mesh.triangles.size());
+        for (const TriangleIndices& t : mesh.triangles)
+            mesh.corner_uvs.push_back({{vertex_uvs[t.v[0]], vertex_uvs[t.v[1]], vertex_uvs[t.v[2]]}});
+    }
 }
 
 }  // namespace

@@ -197,6 +197,9 @@ private:
             if (property == "nx") return Role::NX;
             if (property == "ny") return Role::NY;
             if (property == "nz") return Role::NZ;
+            // Texture coordinates under the names exporters use: u v (Blender, MeshLab), s t, texture_u texture_v.
+            if (property == "u" || property == "s" || property == "texture_u") return Role::U;
+            if (property == "v" || property == "t" || property == "texture_v") return Role::V;
         }
         if (element == "vertex" || element == "face") {
             if (property == "red") return Role::Red;
@@ -244,6 +247,11 @@ private:
                     fail(e.line, 0, "element 'vertex' needs properties x, y and z");
                 const int normals = int{has(Role::NX)} + int{has(Role::NY)} + int{has(Role::NZ)};
                 if (normals != 0 && normals != 3) fail(e.line, 0, "element 'vertex' has some but not all of nx, ny, nz");
+                int us = 0, vs = 0;
+                for (const Property& p : e.properties) us += p.role == Role::U, vs += p.role == Role::V;
+                if (us + vs != 0 && (us != 1 || vs != 1))
+                    fail(e.line, 0, "element 'vertex' needs one u (u, s or texture_u) and one v (v, t or texture_v) "
+                                    "for texture coordinates; it has " + std::to_string(us) + " and " + std::to_string(vs));
             } else if (e.name == "face") {
                 if (!has(Role::Indices))
                     fail(e.line, 0, "element 'face' needs a list property 'vertex_indices' (or 'vertex_index')");

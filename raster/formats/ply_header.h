@@ -14,7 +14,7 @@ enum class Format { Ascii, BinaryLittleEndian };
 enum class Type : uint8_t { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
 
 // What a property means to the loader; everything else is read (validated in ascii) and dropped.
-enum class Role : uint8_t { None, X, Y, Z, NX, NY, NZ, Red, Green, Blue, Indices };
+enum class Role : uint8_t { None, X, Y, Z, NX, NY, NZ, U, V, Red, Green, Blue, Indices };
 
 struct Property {
     std::string name;
@@ -47,7 +47,8 @@ int64_t type_max(Type t);       // integer types only
 
 // Parses the header at the start of `bytes` (`name` names the file in errors). Throws InputError with the line
 // (and the column of the token at fault) on anything the grammar or its limits refuse, including a vertex or face
-// count over the mesh limits, colours or normals given in part, and a `vertex` element without x, y and z.
+// count over the mesh limits, colours, normals or texture coordinates (u v, s t or texture_u texture_v) given in
+// part or twice, and a `vertex` element without x, y and z.
 // Blender 2.4x's `Created by ...` line without `comment` is read as a comment, with a warning on stderr.
 Header parse_header(std::string_view bytes, const std::string& name);
 

@@ -401,4 +401,26 @@ TEST(PlyLoader, loadPlyRejectsDirectoriesAndFilesOver2GiB) {
     std::filesystem::remove_all(dir);
 }
 
+// Texture coordinates under each name exporters give them, kept per triangle corner; given in part they are an
+// error naming the vertex element's line.
+TEST(PlyLoader, readsTextureCoordinatesUnderEachExportersNames) {
+    for (const auto& [u, v] : {std::pair{"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}}) {
+        const std::string text = std::string("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                             "property float z\nproperty float ") + u + "\nproperty float " + v +
+                                 "\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                 "0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 0.5\n4 0 1 2 3\n";
+        const MeshData mesh = parse_ply(text, "uv.ply");
+        ASSERT_EQ(mesh.corner_uvs.size(), 2u) << u;
+        EXPECT_EQ(mesh.corner_uvs[1].uv[2], glm::vec2(0.0f, 0.5f)) << u;  // the fan's second triangle: 0 2 3
+    }
+    try {
+        parse_ply("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+                  "property float u\nend_header\n0 0 0 0\n", "half.ply");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.line(), 3);
+        EXPECT_NE(e.message().find("one u"), std::string::npos) << e.message();
+    }
+}
+
 }  // namespace
