@@ -48,7 +48,8 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     if (flags.filter) {
         TextureFilter filter = TextureFilter::trilinear;
         parse_texture_filter(*flags.filter, filter);
-        set_texture_filter(scene, filter);
+        settings.texture_filter = filter;
+        build_needed_mip_chains(scene);
     }
     if (flags.snap_bits) settings.snap_bits = *flags.snap_bits;
     if (flags.cull) settings.cull_backfaces = *flags.cull == "back";

@@ -171,7 +171,7 @@ RASTER_PROPERTY(LevelOfDetail, growsAlongARecedingPlane) {
         const double b0 = 1.0 - b1 - b2;
         if (b0 < 0.0 || b1 < 0.0 || b2 < 0.0) continue;      // in the other triangle
         const TexturePoint point = lookup.at(0, glm::vec3(static_cast<float>(b0), static_cast<float>(b1), static_cast<float>(b2)));
-        const float lod = texture_footprint(level, binding, point.duv_dx, point.duv_dy).lod;
+        const float lod = texture_footprint(level, sampler_of(binding), point.duv_dx, point.duv_dy).lod;
         if (lod < previous - 1e-3f)
             fail_case("row " + std::to_string(row) + " (further away) has lod " + float_literal(lod) + " below the row under it, " +
                       float_literal(previous));

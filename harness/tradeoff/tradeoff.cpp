@@ -15,6 +15,7 @@
 #include "oracle/reference/reference_geometry.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/core/conventions.h"
+#include "raster/texture/mip_chains.h"
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
 #include "raster/pipeline/front_end.h"
@@ -146,6 +147,9 @@ Image reference_image(const Scene& scene, int grid, const TradeoffOptions& optio
     reference.settings.pattern = SamplePattern::grid;
     reference.settings.msaa = false;
     reference.settings.snap_bits = kMaxSnapBits;  // sample positions as exact as the fixed-point grid allows
+    // Textures reconstructed bilinearly from level 0 and integrated over the pixel by the grid's samples: the
+    // texture's own signal, box-filtered, rather than a mip level's pre-blurred one.
+    reference.settings.texture_filter = TextureFilter::bilinear;
     const oracle::OracleScene geometry = oracle::oracle_scene(reference);
     oracle::SampleBuffer visibility;
     oracle::OracleOptions oracle_options;
@@ -206,6 +210,7 @@ SceneTradeoff measure_scene(const Scene& scene, const std::vector<const Tradeoff
     for (size_t i = 0; i < modes.size(); ++i) {
         report(modes[i]->name);
         work.settings = apply_mode(*modes[i], scene.settings);
+        build_needed_mip_chains(work);  // a filter mode's chains, once per texture
         ModeResult result;
         result.mode = modes[i]->name;
         result.description = modes[i]->description;

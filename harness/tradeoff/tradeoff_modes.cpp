@@ -42,6 +42,11 @@ TradeoffMode grid(int side) {
             }};
 }
 
+TradeoffMode filter(TextureFilter f, const char* description) {
+    return {std::string("filter-") + to_string(f), description, [f](RenderSettings& s) { s.texture_filter = f; },
+            /*needs_textures=*/true};
+}
+
 TradeoffMode msaa(int samples) {
     return {"msaa" + std::to_string(samples),
             std::to_string(samples) + " standard samples, shaded once per pixel per triangle (MSAA)",
@@ -80,6 +85,10 @@ std::vector<TradeoffMode> make_catalogue() {
     modes.push_back({"hiz-on", "hierarchical-Z culling on", [](RenderSettings& s) { s.modes.hierarchical_z = true; }});
     modes.push_back(
         {"hiz-off", "hierarchical-Z culling off", [](RenderSettings& s) { s.modes.hierarchical_z = false; }});
+    modes.push_back(filter(TextureFilter::nearest, "every texture nearest-sampled at level 0 (no mipmaps)"));
+    modes.push_back(filter(TextureFilter::bilinear, "every texture bilinear at level 0 (no mipmaps)"));
+    modes.push_back(filter(TextureFilter::trilinear, "every texture trilinear: bilinear in two mip levels, blended"));
+    modes.push_back(filter(TextureFilter::anisotropic, "every texture anisotropic: trilinear taps along the footprint"));
     modes.push_back(preset("fastest", "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band", 4, 1,
                            SamplePattern::standard, false,
                            {EdgeArithmetic::float32, Interpolation::affine, DepthFormat::fixed24,
@@ -121,15 +130,17 @@ RenderSettings apply_mode(const TradeoffMode& mode, RenderSettings baseline) {
 
 bool same_mode_settings(const RenderSettings& a, const RenderSettings& b) {
     return a.snap_bits == b.snap_bits && a.samples == b.samples && a.pattern == b.pattern && a.msaa == b.msaa &&
+           a.texture_filter == b.texture_filter &&
            a.modes.edges == b.modes.edges && a.modes.interpolation == b.modes.interpolation &&
            a.modes.depth == b.modes.depth && a.modes.clipping == b.modes.clipping &&
            a.modes.hierarchical_z == b.modes.hierarchical_z;
 }
 
-std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline) {
+std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, bool textured) {
     std::vector<const TradeoffMode*> sweep;
     std::vector<RenderSettings> seen;
     for (const TradeoffMode& mode : tradeoff_modes()) {
+        if (mode.needs_textures && !textured) continue;
         const RenderSettings settings = apply_mode(mode, baseline);
         bool duplicate = false;
         for (const RenderSettings& other : seen) duplicate = duplicate || same_mode_settings(settings, other);
@@ -149,7 +160,8 @@ nlohmann::json mode_settings_json(const RenderSettings& s) {
             {"interpolation", to_string(s.modes.interpolation)},
             {"depth", to_string(s.modes.depth)},
             {"clipping", to_string(s.modes.clipping)},
-            {"hierarchical_z", s.modes.hierarchical_z}};
+            {"hierarchical_z", s.modes.hierarchical_z},
+            {"texture_filter", s.texture_filter ? to_string(*s.texture_filter) : "the materials'"}};
 }
 
 }  // namespace raster::harness

@@ -17,6 +17,7 @@ struct TradeoffMode {
     std::string name;         // e.g. "baseline", "snap4", "edges-float", "grid8x8", "affine", "fastest"
     std::string description;  // one line, for --list-modes and the JSON
     std::function<void(RenderSettings&)> apply;  // the change, made to the scene's own settings
+    bool needs_textures = false;                 // a texture filter: only swept on textured scenes
 };
 
 // Every mode, in the default sweep's order: "baseline" (the scene's own settings), then the one-axis variations
@@ -38,7 +39,7 @@ bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
 // The default sweep for a scene: every mode in catalogue order, leaving out each whose settings equal those of a
 // mode already in the list (snap8 when the scene already snaps to 8 bits, samples1 when it has 1 sample, ...), so
 // every point of the plot is a distinct configuration.
-std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline);
+std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, bool textured = false);
 
 // {snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z}
 nlohmann::json mode_settings_json(const RenderSettings& settings);

@@ -161,7 +161,7 @@ Interval log2_of(Interval x) {
 
 }  // namespace
 
-Interval3 filtered_over(const OracleTexture& texture, const TextureBinding& binding, const TextureFootprintBox& box) {
+Interval3 filtered_over(const OracleTexture& texture, const SamplerState& binding, const TextureFootprintBox& box) {
     const OracleTextureLevel& level0 = texture.levels[0];
     switch (binding.filter) {
         case TextureFilter::nearest: return nearest_over(level0, 0, box.uv, binding.wrap);

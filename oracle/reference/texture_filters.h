@@ -24,6 +24,6 @@ long long oracle_wrap(long long i, int n, TextureWrap wrap);
 Interval3 nearest_over(const OracleTextureLevel& level, int level_index, const UvBox& uv, TextureWrap wrap);
 Interval3 bilinear_over(const OracleTextureLevel& level, int level_index, const UvBox& uv, TextureWrap wrap);
 Interval3 trilinear_over(const OracleTexture& texture, const UvBox& uv, Interval lod, TextureWrap wrap);
-Interval3 filtered_over(const OracleTexture& texture, const TextureBinding& binding, const TextureFootprintBox& box);
+Interval3 filtered_over(const OracleTexture& texture, const SamplerState& sampler, const TextureFootprintBox& box);
 
 }  // namespace raster::oracle

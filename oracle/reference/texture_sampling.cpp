@@ -40,7 +40,7 @@ UvDerivatives ray_differential(const OracleCamera& camera, const glm::dvec3 view
 }
 
 OracleTextureSampling::OracleTextureSampling(const Scene& scene, const OracleScene& geometry)
-    : geometry_(geometry), textures_(scene) {
+    : geometry_(geometry), textures_(scene), filter_override_(scene.settings.texture_filter) {
     triangles_.resize(geometry.triangles.size());
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
         const OracleTriangle& t = geometry.triangles[id];
@@ -95,7 +95,7 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
     };
     if (!finite_box(box.d_dx) || !finite_box(box.d_dy))
         box.d_dx = box.d_dy = {Interval::everything(), Interval::everything()};
-    return filtered_over(textures_.of(*material.texture), *material.texture, box);
+    return filtered_over(textures_.of(*material.texture), sampler_of(*material.texture, filter_override_), box);
 }
 
 }  // namespace raster::oracle

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -46,6 +47,7 @@ private:
     };
     const OracleScene& geometry_;
     OracleTextures textures_;
+    std::optional<TextureFilter> filter_override_;  // the render settings' texture_filter
     std::vector<Triangle> triangles_;  // per scene triangle; filled for textured ones
 };
 

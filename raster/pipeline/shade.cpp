@@ -167,7 +167,8 @@ bool Shader::texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3&
     const Material& m = material(triangle);
     if (!m.texture) return false;
     const TexturePoint point = textures_.at(triangle, bary);
-    factor = sample_texture(*m.texture, point.uv, point.duv_dx, point.duv_dy);
+    factor = sample_texture(*m.texture->texture, sampler_of(*m.texture, scene_.settings.texture_filter), point.uv,
+                            point.duv_dx, point.duv_dy);
     return true;
 }
 

@@ -38,6 +38,18 @@ struct TextureBinding {
     int max_anisotropy = 16;  // anisotropic only: most taps along the major axis, in [1, 64]
 };
 
+// How a texture is sampled: a binding's filter (or the render settings' override), wrap and anisotropy cap.
+struct SamplerState {
+    TextureFilter filter = TextureFilter::trilinear;
+    TextureWrap wrap = TextureWrap::repeat;
+    int max_anisotropy = 16;
+};
+
+// The binding's sampler, its filter replaced by `filter_override` when that is set.
+inline SamplerState sampler_of(const TextureBinding& binding, const std::optional<TextureFilter>& filter_override = {}) {
+    return {filter_override.value_or(binding.filter), binding.wrap, binding.max_anisotropy};
+}
+
 // Blinn-Phong coefficients, each RGB. The base colour multiplies ambient and diffuse; specular is the highlight's
 // own colour. The base colour is the mesh's face colour, else its interpolated vertex colour, else `color`; a
 // texture multiplies it.

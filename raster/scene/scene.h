@@ -1,6 +1,7 @@
 // The scene every loader produces and every renderer reads: camera, settings, lights, meshes and materials.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,9 @@ struct RenderSettings {
     int cel_bands = 4;              // cel: bands of n.l, in [1, 64]
     GoochTones gooch;               // gooch: the tones
     PrecisionModes modes;           // edge arithmetic, interpolation, depth format, clipping, hierarchical Z
+    // When set, every textured material's filter (--filter, the trade-off's filter modes); the mip chains it needs
+    // must be built (build_needed_mip_chains) before rendering.
+    std::optional<TextureFilter> texture_filter;
 };
 
 struct Scene {

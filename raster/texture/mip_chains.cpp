@@ -23,7 +23,7 @@ void for_each_material(Scene& scene, Visit visit) {
 void build_needed_mip_chains(Scene& scene) {
     std::map<const Texture*, std::shared_ptr<const Texture>> built;
     for_each_material(scene, [&](Material& material) {
-        if (!material.texture || !uses_mip_chain(material.texture->filter)) return;
+        if (!material.texture || !uses_mip_chain(sampler_of(*material.texture, scene.settings.texture_filter).filter)) return;
         std::shared_ptr<const Texture>& texture = material.texture->texture;
         const TextureLevel& base = texture->levels.front();
         if (static_cast<int>(texture->levels.size()) == mip_level_count(base.width, base.height)) return;
@@ -35,13 +35,6 @@ void build_needed_mip_chains(Scene& scene) {
         }
         texture = slot;
     });
-}
-
-void set_texture_filter(Scene& scene, TextureFilter filter) {
-    for_each_material(scene, [&](Material& material) {
-        if (material.texture) material.texture->filter = filter;
-    });
-    build_needed_mip_chains(scene);
 }
 
 }  // namespace raster

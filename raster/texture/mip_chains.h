@@ -5,12 +5,10 @@
 
 namespace raster {
 
-// Gives every textured material whose filter reads mip levels (trilinear, anisotropic) a texture with its full
-// chain; a texture shared by several materials is built once and stays shared. Textures only sampled by nearest or
-// bilinear keep level 0 alone. Call after the filters are final (the loader does, and so must whoever changes one).
+// Gives every textured material whose filter reads mip levels (trilinear, anisotropic; the settings'
+// texture_filter when set) a texture with its full chain; a texture shared by several materials is built once and
+// stays shared. Textures only sampled by nearest or bilinear keep level 0 alone. Call after the filters are final
+// (the loader does, and so must whoever changes one or the override).
 void build_needed_mip_chains(Scene& scene);
-
-// Sets every textured material's filter (the command line's --filter) and builds the chains it needs.
-void set_texture_filter(Scene& scene, TextureFilter filter);
 
 }  // namespace raster

@@ -62,7 +62,7 @@ glm::vec3 sample_bilinear(const TextureLevel& level, glm::vec2 uv, TextureWrap w
     return glm::mix(top, bottom, fy);
 }
 
-Footprint texture_footprint(const TextureLevel& level0, const TextureBinding& binding, glm::vec2 duv_dx,
+Footprint texture_footprint(const TextureLevel& level0, const SamplerState& binding, glm::vec2 duv_dx,
                             glm::vec2 duv_dy) {
     const glm::vec2 size(static_cast<float>(level0.width), static_cast<float>(level0.height));
     const float rho_x = glm::length(duv_dx * size), rho_y = glm::length(duv_dy * size);
@@ -95,8 +95,8 @@ glm::vec3 sample_trilinear(const Texture& texture, glm::vec2 uv, float lod, Text
     return glm::mix(fine, sample_bilinear(texture.levels[level + 1], uv, wrap), fraction);
 }
 
-glm::vec3 sample_texture(const TextureBinding& binding, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy) {
-    const Texture& texture = *binding.texture;
+glm::vec3 sample_texture(const Texture& texture, const SamplerState& binding, glm::vec2 uv, glm::vec2 duv_dx,
+                         glm::vec2 duv_dy) {
     switch (binding.filter) {
         case TextureFilter::nearest:
             return sample_nearest(texture.levels[0], uv, binding.wrap);

@@ -34,15 +34,16 @@ struct Footprint {
 
 // The footprint of a pixel whose texture coordinates change by `duv_dx` per pixel step right and `duv_dy` per step
 // down. A footprint that is not finite (an edge-on triangle) takes the coarsest level.
-Footprint texture_footprint(const TextureLevel& level0, const TextureBinding& binding, glm::vec2 duv_dx,
+Footprint texture_footprint(const TextureLevel& level0, const SamplerState& sampler, glm::vec2 duv_dx,
                             glm::vec2 duv_dy);
 
 // Trilinear at level of detail `lod`: clamped to [0, last level]; bilinear in levels floor(lod) and the next,
 // blended by the fraction; at or below 0 (magnified), bilinear in level 0.
 glm::vec3 sample_trilinear(const Texture& texture, glm::vec2 uv, float lod, TextureWrap wrap);
 
-// The texture's value at `uv` through the binding's filter, for a pixel with the given derivatives (per pixel,
+// The texture's value at `uv` through the sampler's filter, for a pixel with the given derivatives (per pixel,
 // whatever the sample count). The texture must have its mip chain when the filter uses one.
-glm::vec3 sample_texture(const TextureBinding& binding, glm::vec2 uv, glm::vec2 duv_dx, glm::vec2 duv_dy);
+glm::vec3 sample_texture(const Texture& texture, const SamplerState& sampler, glm::vec2 uv, glm::vec2 duv_dx,
+                         glm::vec2 duv_dy);
 
 }  // namespace raster

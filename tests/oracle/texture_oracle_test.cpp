@@ -82,12 +82,12 @@ TEST(OracleTexture, itsFilterBoxesHoldRastersLookups) {
             for (int n = 0; n < 300; ++n) {
                 const glm::vec2 uv(coordinate(rng), coordinate(rng));
                 const glm::vec2 dx(derivative(rng), derivative(rng)), dy(derivative(rng), derivative(rng));
-                const glm::vec3 value = sample_texture(binding, uv, dx, dy);
+                const glm::vec3 value = sample_texture(*binding.texture, sampler_of(binding), uv, dx, dy);
                 TextureFootprintBox box;
                 box.uv = {Interval(uv.x), Interval(uv.y)};
                 box.d_dx = {Interval(dx.x), Interval(dx.y)};
                 box.d_dy = {Interval(dy.x), Interval(dy.y)};
-                const Interval3 allowed = filtered_over(p.oracle, binding, box);
+                const Interval3 allowed = filtered_over(p.oracle, sampler_of(binding), box);
                 for (int c = 0; c < 3; ++c) {
                     ASSERT_LE(allowed[c].lo, value[c]) << to_string(filter) << " " << to_string(wrap) << " uv " << uv.x << " " << uv.y;
                     ASSERT_GE(allowed[c].hi, value[c]) << to_string(filter) << " " << to_string(wrap) << " uv " << uv.x << " " << uv.y;

@@ -57,10 +57,10 @@ TEST(LevelOfDetail, isLog2OfTheLongerSideInTexels) {
     TextureLevel level;
     level.width = 64;
     level.height = 16;
-    EXPECT_FLOAT_EQ(texture_footprint(level, binding, {1.0f / 64, 0}, {0, 1.0f / 16}).lod, 0.0f);
-    EXPECT_FLOAT_EQ(texture_footprint(level, binding, {4.0f / 64, 0}, {0, 1.0f / 16}).lod, 2.0f);
-    EXPECT_FLOAT_EQ(texture_footprint(level, binding, {0, 0}, {3.0f / 64, 4.0f / 16}).lod, std::log2(5.0f));
-    EXPECT_TRUE(std::isinf(texture_footprint(level, binding, {NAN, 0}, {0, 0}).lod));
+    EXPECT_FLOAT_EQ(texture_footprint(level, sampler_of(binding), {1.0f / 64, 0}, {0, 1.0f / 16}).lod, 0.0f);
+    EXPECT_FLOAT_EQ(texture_footprint(level, sampler_of(binding), {4.0f / 64, 0}, {0, 1.0f / 16}).lod, 2.0f);
+    EXPECT_FLOAT_EQ(texture_footprint(level, sampler_of(binding), {0, 0}, {3.0f / 64, 4.0f / 16}).lod, std::log2(5.0f));
+    EXPECT_TRUE(std::isinf(texture_footprint(level, sampler_of(binding), {NAN, 0}, {0, 0}).lod));
 }
 
 TEST(LevelOfDetail, anisotropicSplitsTheLongSideIntoTaps) {
@@ -70,12 +70,12 @@ TEST(LevelOfDetail, anisotropicSplitsTheLongSideIntoTaps) {
     TextureLevel level;
     level.width = level.height = 64;
     // 8 texels across x, 1 down y: ratio 8, capped at 4 taps, so each tap covers 2 texels: lod 1.
-    const Footprint f = texture_footprint(level, binding, {8.0f / 64, 0}, {0, 1.0f / 64});
+    const Footprint f = texture_footprint(level, sampler_of(binding), {8.0f / 64, 0}, {0, 1.0f / 64});
     EXPECT_EQ(f.taps, 4);
     EXPECT_FLOAT_EQ(f.lod, 1.0f);
     EXPECT_EQ(f.major_axis, glm::vec2(8.0f / 64, 0));
     // Ratio 2.5 rounds up to 3 taps.
-    EXPECT_EQ(texture_footprint(level, binding, {0, 1.0f / 64}, {0, 2.5f / 64}).taps, 3);
+    EXPECT_EQ(texture_footprint(level, sampler_of(binding), {0, 1.0f / 64}, {0, 2.5f / 64}).taps, 3);
 }
 
 TEST(Trilinear, blendsTheTwoLevelsAroundTheLevelOfDetail) {
