@@ -44,6 +44,8 @@ Camera orbit_camera(const Camera& camera, double yaw_degrees, double pitch_degre
     const glm::dvec3 orbited = rotate(pitched, up, yaw_degrees * kDegreesToRadians) * distance;
     Camera result = camera;
     result.eye = glm::vec3(glm::dvec3(camera.target) + orbited);
+    result.near = static_cast<float>(camera.near * std::min(1.0, distance));
+    result.far = static_cast<float>(camera.far * std::max(1.0, distance));
     return result;
 }
 

@@ -21,8 +21,10 @@ double orbit_elevation_limit_degrees(const Camera& camera);
 //   pitch' = clamp(e0 + pitch, -L, L) - e0
 //   eye'   = target + distance * R(u, yaw) R(s, pitch') o
 // R(a, angle) rotates right-handedly about the unit axis a (Rodrigues' formula, in double precision), so positive
-// yaw turns the eye counter-clockwise seen from above (up towards the viewer) and positive pitch raises it. Target,
-// up, field of view, near and far stay the scene's; yaw 0, pitch 0, distance 1 gives the scene's camera.
+// yaw turns the eye counter-clockwise seen from above (up towards the viewer) and positive pitch raises it.
+// Moving closer divides near by the factor and moving away multiplies far by it (near * min(1, distance),
+// far * max(1, distance)), so what the scene's frustum holds stays in it at any distance. Target, up and the field
+// of view stay the scene's; yaw 0, pitch 0, distance 1 gives the scene's camera.
 Camera orbit_camera(const Camera& camera, double yaw_degrees, double pitch_degrees, double distance);
 
 }  // namespace raster::cli

@@ -1,5 +1,6 @@
 // `raster view`'s orbit: the scene's own camera at yaw 0, pitch 0, distance 1, exactly; right-handed yaw about up;
-// positive pitch raising the eye; the elevation clamp; distance scaling; target, up and lens kept.
+// positive pitch raising the eye; the elevation clamp; distance scaling the eye and the clip planes; target, up and
+// field of view kept.
 #include "apps/viewer_orbit.h"
 
 #include <cmath>
@@ -38,6 +39,8 @@ TEST(ViewerOrbit, noOrbitIsTheScenesCameraExactly) {
         EXPECT_EQ(same.eye, camera.eye);
         EXPECT_EQ(same.target, camera.target);
         EXPECT_EQ(same.up, camera.up);
+        EXPECT_EQ(same.near, camera.near);
+        EXPECT_EQ(same.far, camera.far);
     }
 }
 
@@ -73,6 +76,18 @@ TEST(ViewerOrbit, theElevationStopsShortOfUp) {
     EXPECT_DOUBLE_EQ(orbit_elevation_limit_degrees(steep), elevation);
     EXPECT_EQ(orbit_camera(steep, 0.0, 0.0, 1.0).eye, steep.eye);
     EXPECT_NEAR(eye_elevation_degrees(orbit_camera(steep, 0.0, 10.0, 1.0)), elevation, 1e-3);
+}
+
+TEST(ViewerOrbit, theClipPlanesFollowTheDistanceSoTheSceneStaysInside) {
+    Camera camera = straight_on();
+    camera.near = 1.0f;
+    camera.far = 30.0f;
+    const Camera away = orbit_camera(camera, 0.0, 0.0, 4.0);
+    EXPECT_EQ(away.near, 1.0f);
+    EXPECT_EQ(away.far, 120.0f);
+    const Camera close = orbit_camera(camera, 0.0, 0.0, 0.25);
+    EXPECT_EQ(close.near, 0.25f);
+    EXPECT_EQ(close.far, 30.0f);
 }
 
 TEST(ViewerOrbit, theTargetUpAndLensStayTheScenes) {
