@@ -14,7 +14,8 @@ namespace {
 
 constexpr const char* kDescription =
     "raster: a CPU triangle rasterizer with a verification framework around it.\n"
-    "Exit codes: 0 success, 1 a check failed, 2 bad usage or input (nothing written), 3 an output could not be written.";
+    "Exit codes: 0 success, 1 a check failed (view: the port could not be bound), 2 bad usage or input (nothing\n"
+    "written), 3 an output could not be written.";
 
 }  // namespace
 
@@ -22,7 +23,7 @@ struct CommandLine::Parser {
     CLI::App app{kDescription, "raster"};
     std::vector<Command> commands;
 
-    Parser() {
+    explicit Parser(const std::vector<CommandRegistrar>& extra_commands) {
         app.require_subcommand(1);
         commands = {
             add_render_command(app),
@@ -31,10 +32,12 @@ struct CommandLine::Parser {
             add_tradeoff_command(app),
             add_balboa_command(app),
         };
+        for (const CommandRegistrar add_command : extra_commands) commands.push_back(add_command(app));
     }
 };
 
-CommandLine::CommandLine() : parser_(std::make_unique<Parser>()) {}
+CommandLine::CommandLine(const std::vector<CommandRegistrar>& extra_commands)
+    : parser_(std::make_unique<Parser>(extra_commands)) {}
 CommandLine::~CommandLine() = default;
 
 int CommandLine::run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -85,8 +88,9 @@ int CommandLine::run_once(const std::vector<std::string>& args, std::ostream& ou
     return kExitBadInput;
 }
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    CommandLine command_line;
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+        const std::vector<CommandRegistrar>& extra_commands) {
+    CommandLine command_line(extra_commands);
     return command_line.run(args, out, err);
 }
 

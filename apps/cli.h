@@ -6,23 +6,35 @@
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace raster::cli {
+
+struct Command;
 
 // Exit codes scripts can rely on.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitCheckFailed = 1;  // a comparison or check ran and failed
+inline constexpr int kExitCannotServe = 1;  // `raster view`: the port could not be bound
 inline constexpr int kExitBadInput = 2;     // bad usage, unreadable or invalid input; nothing was written
 inline constexpr int kExitIoError = 3;      // the input was fine but an output could not be written
 
+// Registers one subcommand beyond raster_cli's own (apps/command.h): the `raster` program adds `view`, which lives
+// in its own module so that nothing else linking raster_cli (the cli fuzz target, in-process tests) links a server.
+using CommandRegistrar = Command (*)(CLI::App&);
+
 // Runs `raster` with argv-style arguments (args[0] is the program name), writing to out and err.
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+        const std::vector<CommandRegistrar>& extra_commands = {});
 
 // The same command line built once and run many times (the cli fuzz target runs thousands of argument lists a
 // second, and registering every subcommand's flags costs more than most runs): each run starts from every flag's
 // default, so it behaves exactly as run() on the same arguments.
 class CommandLine {
 public:
-    CommandLine();
+    explicit CommandLine(const std::vector<CommandRegistrar>& extra_commands = {});
     ~CommandLine();
     CommandLine(const CommandLine&) = delete;
     CommandLine& operator=(const CommandLine&) = delete;

@@ -25,5 +25,8 @@ Command add_compare_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_tradeoff_command(CLI::App& app);
 Command add_balboa_command(CLI::App& app);
+// `raster view`, in its own module raster_viewer (it links cpp-httplib), which only the `raster` program links and
+// registers (main.cpp, through run()'s extra commands).
+Command add_view_command(CLI::App& app);
 
 }  // namespace raster::cli

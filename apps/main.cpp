@@ -1,9 +1,14 @@
-// Entry point of the `raster` program: hands argv to the command-line layer.
+// Entry point of the `raster` program: hands argv to the command-line layer, with `view` when it is built.
 #include <iostream>
 
 #include "apps/cli.h"
+#include "apps/command.h"
 
 int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
-    return raster::cli::run(std::vector<std::string>(argv, argv + argc), std::cout, std::cerr);
+    std::vector<raster::cli::CommandRegistrar> extra_commands;
+#ifdef RASTER_WITH_VIEWER
+    extra_commands.push_back(raster::cli::add_view_command);
+#endif
+    return raster::cli::run(std::vector<std::string>(argv, argv + argc), std::cout, std::cerr, extra_commands);
 }

@@ -1,0 +1,305 @@
+// The viewer's page, HTML, style and script in one string: controls, the frame loop, orbit and zoom, self-test.
+#include "apps/viewer_page.h"
+
+namespace raster::cli {
+namespace {
+
+constexpr const char* kPage = R"PAGE(<!doctype html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>raster view</title>
+<style>
+  body { font: 14px/1.4 system-ui, sans-serif; margin: 0; background: #1b1c20; color: #e6e6e6; }
+  header { padding: 8px 16px; border-bottom: 1px solid #333; }
+  main { display: flex; flex-wrap: wrap; gap: 16px; padding: 16px; align-items: flex-start; }
+  #frame { display: block; max-width: 100%; background: #000; cursor: grab; touch-action: none; user-select: none; }
+  #frame.dragging { cursor: grabbing; }
+  aside { width: 280px; }
+  fieldset { border: 1px solid #444; margin: 0 0 12px; }
+  button { margin: 2px; padding: 4px 8px; background: #2c2e35; color: inherit; border: 1px solid #555;
+           border-radius: 3px; cursor: pointer; }
+  button[aria-pressed="true"] { background: #3d6bd6; border-color: #3d6bd6; }
+  button:disabled { opacity: 0.4; cursor: default; }
+  .readout { font-variant-numeric: tabular-nums; }
+  .note { color: #999; font-size: 12px; }
+  #status { color: #f08080; white-space: pre-wrap; }
+  #selftest { margin: 0 16px 16px; white-space: pre-wrap; word-break: break-all; font-size: 11px; }
+</style>
+</head>
+<body>
+<header><strong>raster view</strong> <span id="scene"></span></header>
+<main>
+  <img id="frame" alt="the rendered frame" draggable="false">
+  <aside>
+    <fieldset id="shading"><legend>Shading</legend></fieldset>
+    <fieldset id="samples"><legend>Samples per pixel</legend></fieldset>
+    <fieldset><legend>Anti-aliasing</legend>
+      <label><input type="checkbox" id="msaa"> MSAA: shade once per pixel per triangle</label></fieldset>
+    <fieldset id="filter"><legend>Texture filter</legend><div class="note" id="filter-note"></div></fieldset>
+    <fieldset><legend>Camera</legend>
+      <div class="readout" id="camera"></div>
+      <button type="button" id="camera-reset">reset</button>
+      <div class="note">Drag the image to orbit about the target, turn the wheel over it to zoom.</div></fieldset>
+    <p class="readout">frame: <span id="frame-ms">-</span> ms <span class="note" id="frame-info"></span></p>
+    <p id="status"></p>
+  </aside>
+</main>
+<pre id="selftest" hidden></pre>
+<script>
+'use strict';
+const SHADINGS = ['flat', 'gouraud', 'phong', 'blinn-phong', 'cel', 'gooch', 'unlit'];
+const SAMPLES = [1, 4, 16];
+const FILTERS = ['nearest', 'bilinear', 'trilinear', 'anisotropic'];
+const DEGREES_PER_PIXEL = 0.4;  // of drag
+const ZOOM_PER_100_WHEEL = 1.1;  // distance factor per 100 units of wheel delta
+const selftest = new URLSearchParams(location.search).get('selftest') === '1';
+const $ = (id) => document.getElementById(id);
+const image = $('frame');
+
+// What the next frame asks for; filter null keeps the scene's own.
+const view = {shading: 'blinn-phong', samples: 1, msaa: false, filter: null, yaw: 0, pitch: 0, distance: 1};
+// From GET /state: the elevation limit, the scene eye's own elevation, the distance range, the scene's filter.
+const scene = {elevationLimit: 89, elevation: 0, distance: [0.05, 20], filter: 'none', textured: false};
+const frames = [];  // every frame shown: {params, index, ms, hash (self-test only)}
+let rendering = false, renderWanted = false, idleWaiters = [], shownUrl = null, drag = null;
+
+const clamp = (x, low, high) => Math.min(high, Math.max(low, x));
+const wrapDegrees = (x) => ((((x + 180) % 360) + 360) % 360) - 180;
+const clampPitch = (pitch) => clamp(pitch, Math.max(-180, -scene.elevationLimit - scene.elevation),
+                                   Math.min(180, scene.elevationLimit - scene.elevation));
+
+function showStatus(text) { $('status').textContent = text; }
+
+// GET /render's parameters for the current view (README "Viewer").
+function renderParams() {
+  const params = {shading: view.shading, samples: String(view.samples), msaa: view.msaa ? '1' : '0',
+                  yaw: view.yaw.toFixed(2), pitch: view.pitch.toFixed(2), distance: view.distance.toFixed(4)};
+  if (view.filter) params.filter = view.filter;
+  return params;
+}
+
+// 64-bit FNV-1a, as the server hashes the PNG it sends (GET /log's png_fnv1a64).
+function fnv1a64(bytes) {
+  const prime = 0x100000001b3n, mask = (1n << 64n) - 1n;
+  let hash = 0xcbf29ce484222325n;
+  for (const byte of bytes) hash = ((hash ^ BigInt(byte)) * prime) & mask;
+  return hash.toString(16).padStart(16, '0');
+}
+
+// Resolves on the load event, not img.decode(): Chromium's virtual time (the tests' --virtual-time-budget) waits
+// for loads but not for decode(), and dumped the DOM in the middle of the self-test.
+function showImage(bytes) {
+  return new Promise((resolve, reject) => {
+    const url = URL.createObjectURL(new Blob([bytes], {type: 'image/png'}));
+    image.onload = () => {
+      if (shownUrl) URL.revokeObjectURL(shownUrl);
+      shownUrl = url;
+      resolve();
+    };
+    image.onerror = () => reject(new Error('the frame is not an image the browser decodes'));
+    image.src = url;
+  });
+}
+
+// Renders until the frame shown is the current view's: one request at a time, and changes made meanwhile
+// become one next request, so a fast drag never queues a backlog.
+async function renderLoop() {
+  rendering = true;
+  while (renderWanted) {
+    renderWanted = false;
+    const params = renderParams();
+    try {
+      const response = await fetch('/render?' + new URLSearchParams(params), {cache: 'no-store'});
+      if (!response.ok) {
+        showStatus(`the server refused the frame (${response.status}): ${await response.text()}`);
+        continue;
+      }
+      const bytes = new Uint8Array(await response.arrayBuffer());
+      await showImage(bytes);
+      const frame = {params, index: Number(response.headers.get('X-Frame-Index')),
+                     ms: Number(response.headers.get('X-Frame-Ms'))};
+      if (selftest) frame.hash = fnv1a64(bytes);
+      frames.push(frame);
+      $('frame-ms').textContent = frame.ms.toFixed(1);
+      const encodeMs = Number(response.headers.get('X-Encode-Ms')).toFixed(1);
+      $('frame-info').textContent = `(server render; frame ${frame.index}, PNG encoding ${encodeMs} ms)`;
+      showStatus('');
+    } catch (error) {
+      showStatus(`the frame could not be fetched: ${error}`);
+    }
+  }
+  rendering = false;
+  const waiters = idleWaiters;
+  idleWaiters = [];
+  waiters.forEach((resolve) => resolve());
+}
+
+function requestFrame() {
+  renderWanted = true;
+  showControls();
+  if (!rendering) renderLoop();
+}
+
+// Resolves once no frame is being rendered or wanted.
+function idle() {
+  return rendering || renderWanted ? new Promise((resolve) => idleWaiters.push(resolve)) : Promise.resolve();
+}
+
+function markPressed(prefix, values, chosen) {
+  for (const value of values) $(`${prefix}-${value}`).setAttribute('aria-pressed', String(value === chosen));
+}
+
+function showControls() {
+  markPressed('shading', SHADINGS, view.shading);
+  markPressed('samples', SAMPLES, view.samples);
+  markPressed('filter', FILTERS, view.filter || scene.filter);
+  $('msaa').checked = view.msaa;
+  $('camera').textContent =
+    `yaw ${view.yaw.toFixed(1)}\u00b0, pitch ${view.pitch.toFixed(1)}\u00b0, distance ${view.distance.toFixed(2)}`;
+}
+
+function addButtons(fieldset, values, choose) {
+  for (const value of values) {
+    const button = document.createElement('button');
+    button.type = 'button';
+    button.id = `${fieldset}-${value}`;
+    button.textContent = String(value);
+    button.addEventListener('click', () => {
+      choose(value);
+      requestFrame();
+    });
+    $(fieldset).appendChild(button);
+  }
+}
+
+function buildControls() {
+  addButtons('shading', SHADINGS, (shading) => { view.shading = shading; });
+  addButtons('samples', SAMPLES, (samples) => { view.samples = samples; });
+  addButtons('filter', FILTERS, (filter) => { view.filter = filter; });
+  $('msaa').addEventListener('change', (event) => {
+    view.msaa = event.target.checked;
+    requestFrame();
+  });
+  $('camera-reset').addEventListener('click', () => {
+    Object.assign(view, {yaw: 0, pitch: 0, distance: 1});
+    requestFrame();
+  });
+  image.addEventListener('pointerdown', (event) => {
+    if (event.button !== 0) return;
+    drag = {x: event.clientX, y: event.clientY, yaw: view.yaw, pitch: view.pitch};
+    try {
+      image.setPointerCapture(event.pointerId);
+    } catch (error) {
+      // A pointer the browser does not know (a scripted one) has nothing to capture; the drag works the same.
+    }
+    image.classList.add('dragging');
+    event.preventDefault();
+  });
+  image.addEventListener('pointermove', (event) => {
+    if (!drag) return;
+    // Dragging right turns the scene right (the eye left, yaw down); dragging down tips its top towards you.
+    view.yaw = wrapDegrees(drag.yaw - (event.clientX - drag.x) * DEGREES_PER_PIXEL);
+    view.pitch = clampPitch(drag.pitch + (event.clientY - drag.y) * DEGREES_PER_PIXEL);
+    requestFrame();
+  });
+  const endDrag = () => {
+    drag = null;
+    image.classList.remove('dragging');
+  };
+  image.addEventListener('pointerup', endDrag);
+  image.addEventListener('pointercancel', endDrag);
+  image.addEventListener('wheel', (event) => {
+    event.preventDefault();
+    const factor = Math.pow(ZOOM_PER_100_WHEEL, event.deltaY / 100);
+    view.distance = clamp(view.distance * factor, scene.distance[0], scene.distance[1]);
+    requestFrame();
+  }, {passive: false});
+}
+
+// The self-test (?selftest=1): a user's click, drag and wheel, as DOM events through the handlers above, each
+// followed by the frame it brought; the report says what each frame asked for and the hash of the bytes shown.
+async function runSelfTest() {
+  const report = {steps: []};
+  try {
+    await idle();
+    const step = async (name, act) => {
+      const before = frames.length;
+      act();
+      await idle();
+      const frame = frames[frames.length - 1];
+      report.steps.push({name, new_frames: frames.length - before, frame});
+      return frame;
+    };
+    const first = await step('initial', () => {});
+    const flat = await step('click shading-flat', () =>
+      $('shading-flat').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window})));
+    const box = image.getBoundingClientRect();
+    const centre = {clientX: box.left + box.width / 2, clientY: box.top + box.height / 2};
+    const pointer = (type, dx, dy) => image.dispatchEvent(new PointerEvent(type, {
+      bubbles: true, cancelable: true, pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0,
+      buttons: type === 'pointerup' ? 0 : 1, clientX: centre.clientX + dx, clientY: centre.clientY + dy}));
+    const dragged = await step('drag', () => {
+      pointer('pointerdown', 0, 0);
+      pointer('pointermove', 60, 25);
+      pointer('pointerup', 60, 25);
+    });
+    const zoomed = await step('wheel', () => image.dispatchEvent(new WheelEvent('wheel', {
+      bubbles: true, cancelable: true, deltaY: 300, ...centre})));
+    report.checks = {
+      flat_asked_for: flat.params.shading === 'flat',
+      flat_changed_the_image: flat.hash !== first.hash,
+      drag_moved_the_camera: flat.params.yaw !== dragged.params.yaw && flat.params.pitch !== dragged.params.pitch,
+      drag_changed_the_image: dragged.hash !== flat.hash,
+      drag_kept_the_shading: dragged.params.shading === 'flat',
+      wheel_moved_the_camera_back: Number(zoomed.params.distance) > Number(dragged.params.distance),
+      wheel_changed_the_image: zoomed.hash !== dragged.hash,
+    };
+    report.pass = Object.values(report.checks).every(Boolean);
+  } catch (error) {
+    report.error = String(error);
+    report.pass = false;
+  }
+  $('selftest').textContent = JSON.stringify(report);
+  $('selftest').hidden = false;
+  document.body.dataset.selftest = report.pass ? 'pass' : 'fail';
+}
+
+async function start() {
+  buildControls();
+  try {
+    const response = await fetch('/state', {cache: 'no-store'});
+    const state = await response.json();
+    Object.assign(view, {shading: state.scene_settings.shading, samples: state.scene_settings.samples,
+                         msaa: state.scene_settings.msaa});
+    Object.assign(scene, {elevationLimit: state.limits.elevation_degrees, elevation: state.camera.elevation_degrees,
+                          distance: state.limits.distance, filter: state.scene_settings.filter,
+                          textured: state.textured});
+    $('scene').textContent = `${state.scene} (${state.width} x ${state.height})`;
+  } catch (error) {
+    showStatus(`the viewer's state could not be read: ${error}`);
+    document.body.dataset.selftest = 'fail';
+    return;
+  }
+  if (!scene.textured) {
+    for (const filter of FILTERS) $(`filter-${filter}`).disabled = true;
+    $('filter-note').textContent = 'The scene has no textures: no filter changes it.';
+  }
+  requestFrame();
+  if (selftest) runSelfTest();
+}
+
+start();
+</script>
+</body>
+</html>
+)PAGE";
+
+}  // namespace
+
+const std::string& viewer_page_html() {
+    static const std::string page = kPage;
+    return page;
+}
+
+}  // namespace raster::cli

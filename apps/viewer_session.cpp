@@ -1,0 +1,149 @@
+// The viewer's frames: a request applied to a copy of the kept scene, rendered, encoded, hashed and recorded.
+#include "apps/viewer_session.h"
+
+#include <cstdio>
+#include <set>
+
+#include "apps/viewer_orbit.h"
+#include "raster/core/stopwatch.h"
+#include "raster/image/image.h"
+#include "raster/pipeline/render.h"
+#include "raster/scene/validation.h"
+#include "raster/texture/mip_chains.h"
+
+namespace raster::cli {
+namespace {
+
+nlohmann::json to_json(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+// The filter every textured material of the scene uses: its name, "mixed" when they differ, "none" untextured.
+std::string scene_filter_name(const Scene& scene) {
+    std::set<std::string> filters;
+    for (const SceneMesh& mesh : scene.meshes)
+        for_each_material(mesh, [&](const Material& material) {
+            if (material.texture) filters.insert(to_string(material.texture->filter));
+        });
+    if (filters.empty()) return "none";
+    return filters.size() == 1 ? *filters.begin() : "mixed";
+}
+
+}  // namespace
+
+uint64_t fnv1a_64(std::string_view bytes) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    for (const char byte : bytes) {
+        hash ^= static_cast<unsigned char>(byte);
+        hash *= 0x100000001b3ull;
+    }
+    return hash;
+}
+
+std::string hex64(uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
+}
+
+nlohmann::json to_json(const ViewerFrameRecord& record) {
+    return {{"index", record.index},
+            {"shading", to_string(record.shading)},
+            {"samples", record.samples},
+            {"msaa", record.msaa},
+            {"filter", record.filter},
+            {"yaw", record.yaw_degrees},
+            {"pitch", record.pitch_degrees},
+            {"distance", record.distance},
+            {"eye", to_json(record.eye)},
+            {"frame_ms", record.frame_ms},
+            {"encode_ms", record.encode_ms},
+            {"png_bytes", record.png_bytes},
+            {"png_fnv1a64", hex64(record.png_fnv1a)}};
+}
+
+ViewerSession::ViewerSession(Scene scene, const RenderOptions& options) : scene_(std::move(scene)), options_(options) {}
+
+const Scene& ViewerSession::scene_with_filter(const std::optional<TextureFilter>& filter) {
+    if (!filter) return scene_;
+    auto found = filtered_scenes_.find(*filter);
+    if (found == filtered_scenes_.end()) {
+        Scene filtered = scene_;
+        set_texture_filter(filtered, *filter);
+        found = filtered_scenes_.emplace(*filter, std::move(filtered)).first;
+    }
+    return found->second;
+}
+
+ViewerFrame ViewerSession::render(const ViewRequest& request) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    Scene frame = scene_with_filter(request.filter);  // a copy: no request changes what the next one starts from
+    RenderSettings& settings = frame.settings;
+    if (request.shading) settings.shading = *request.shading;
+    if (request.samples) settings.samples = *request.samples;
+    if (request.msaa) settings.msaa = *request.msaa;
+    frame.camera = orbit_camera(scene_.camera, request.yaw_degrees, request.pitch_degrees, request.distance);
+    if (std::string problem = settings_problem(settings); !problem.empty()) throw ViewRequestError(problem);
+    if (const auto problem = camera_problem(frame.camera)) throw ViewRequestError(problem->message);
+
+    render_into(frame, options_, buffers_);
+    const Clock::time_point encode_start = Clock::now();
+    const std::vector<uint8_t> png = encode_image(buffers_.image, ImageFormat::png);
+    ViewerFrame result{std::string(png.begin(), png.end()), {}};
+
+    ViewerFrameRecord& record = result.record;
+    record.encode_ms = milliseconds_since(encode_start);
+    record.index = frames_served_++;
+    record.shading = settings.shading;
+    record.samples = settings.samples;
+    record.msaa = settings.msaa;
+    record.filter = request.filter ? to_string(*request.filter) : "scene";
+    record.yaw_degrees = request.yaw_degrees;
+    record.pitch_degrees = request.pitch_degrees;
+    record.distance = request.distance;
+    record.eye = frame.camera.eye;
+    record.frame_ms = buffers_.stats.ms_total;
+    record.png_bytes = result.png.size();
+    record.png_fnv1a = fnv1a_64(result.png);
+    records_.push_back(record);
+    if (records_.size() > kMaxLoggedFrames) records_.pop_front();
+    return result;
+}
+
+nlohmann::json ViewerSession::state() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const Camera& camera = scene_.camera;
+    return {{"scene", scene_.path},
+            {"width", scene_.settings.width},
+            {"height", scene_.settings.height},
+            {"textured", has_textures(scene_)},
+            {"scene_settings",
+             {{"shading", to_string(scene_.settings.shading)},
+              {"samples", scene_.settings.samples},
+              {"pattern", to_string(scene_.settings.pattern)},
+              {"msaa", scene_.settings.msaa},
+              {"filter", scene_filter_name(scene_)}}},
+            {"camera",
+             {{"eye", to_json(camera.eye)},
+              {"target", to_json(camera.target)},
+              {"up", to_json(camera.up)},
+              {"fov_y_degrees", camera.fov_y_degrees},
+              {"near", camera.near},
+              {"far", camera.far},
+              {"elevation_degrees", eye_elevation_degrees(camera)}}},
+            {"limits",
+             {{"yaw_degrees", kMaxYawDegrees},
+              {"pitch_degrees", kMaxPitchDegrees},
+              {"elevation_degrees", orbit_elevation_limit_degrees(camera)},
+              {"distance", {kMinDistance, kMaxDistance}},
+              {"samples", {1, kMaxViewSamples}}}},
+            {"frames_served", frames_served_},
+            {"last_frame", records_.empty() ? nlohmann::json(nullptr) : to_json(records_.back())}};
+}
+
+nlohmann::json ViewerSession::log() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    nlohmann::json frames = nlohmann::json::array();
+    for (const ViewerFrameRecord& record : records_) frames.push_back(to_json(record));
+    return {{"frames_served", frames_served_}, {"frames", frames}};
+}
+
+}  // namespace raster::cli

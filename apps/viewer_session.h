@@ -1,0 +1,85 @@
+// `raster view`'s frames: the loaded scene kept as it was loaded, each request rendered on a copy of it, one at a
+// time, and a record of every frame served (GET /log), so that a test can check what the server really sent.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/viewer_requests.h"
+#include "raster/pipeline/frame.h"
+#include "raster/scene/scene.h"
+
+namespace raster::cli {
+
+// What the server knows of one frame it served.
+struct ViewerFrameRecord {
+    uint64_t index = 0;  // 0 for the session's first frame
+    ShadingMode shading = ShadingMode::blinn_phong;
+    int samples = 1;
+    bool msaa = false;
+    std::string filter;  // the filter asked for, or "scene" when the request kept the scene's own
+    double yaw_degrees = 0, pitch_degrees = 0, distance = 1;
+    glm::vec3 eye{0.0f};  // the orbited camera's
+    double frame_ms = 0;   // render() alone (RenderStats::ms_total): the X-Frame-Ms header
+    double encode_ms = 0;  // the PNG encoding after it
+    size_t png_bytes = 0;
+    uint64_t png_fnv1a = 0;  // fnv1a_64 of the PNG bytes
+};
+
+struct ViewerFrame {
+    std::string png;
+    ViewerFrameRecord record;
+};
+
+// Thrown by ViewerSession::render when a request, applied to this scene, is not a valid frame (a 400).
+class ViewRequestError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// 64-bit FNV-1a of `bytes` (offset basis 0xcbf29ce484222325, prime 0x100000001b3); the page computes the same.
+uint64_t fnv1a_64(std::string_view bytes);
+// The hash as the JSON and the page write it: 16 lowercase hex digits.
+std::string hex64(uint64_t value);
+
+class ViewerSession {
+public:
+    // Keeps `scene` (valid, as load_scene returns it) for the whole session; `options` are every frame's.
+    ViewerSession(Scene scene, const RenderOptions& options);
+
+    // Renders the request on a copy of the scene and records it. One render at a time: concurrent calls wait.
+    // Throws ViewRequestError when the request makes an invalid frame (say, 2 samples on a grid pattern).
+    ViewerFrame render(const ViewRequest& request);
+
+    // GET /state: the scene, its own settings and camera, the request limits, the frames served and the last one.
+    nlohmann::json state() const;
+
+    // GET /log: the records of the last kMaxLoggedFrames frames served, oldest first.
+    nlohmann::json log() const;
+
+    static constexpr size_t kMaxLoggedFrames = 1000;
+
+private:
+    // The scene as loaded, or a copy with every textured material's filter set (built once per filter).
+    const Scene& scene_with_filter(const std::optional<TextureFilter>& filter);
+
+    const Scene scene_;
+    const RenderOptions options_;
+    std::map<TextureFilter, Scene> filtered_scenes_;
+    RenderResult buffers_;  // reused from frame to frame
+    std::deque<ViewerFrameRecord> records_;
+    uint64_t frames_served_ = 0;
+    mutable std::mutex mutex_;
+};
+
+// A record as GET /log and GET /state write it.
+nlohmann::json to_json(const ViewerFrameRecord& record);
+
+}  // namespace raster::cli

@@ -1,0 +1,161 @@
+// `raster view` in headless Chromium (Debian `chromium`, installed by .ci/install): the page, opened with
+// ?selftest=1, clicks #shading-flat, drags the image and turns the wheel over it as DOM events through the handlers
+// a user's input runs. The test does not take the page's word for it: it checks the frames the server logged, with
+// their parameters and PNG hashes, that the page showed exactly those bytes, and that the log's hashes are of the
+// bytes the server sends. Skipped, saying so, when Chromium is not installed.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/temp_dir.h"
+#include "tests/support/viewer_process.h"
+
+namespace raster::test_support {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kTeapot = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/teapot.yaml";
+
+std::string find_chromium() {
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "");
+    for (std::string dir; std::getline(dirs, dir, ':');)
+        for (const char* name : {"chromium", "chromium-browser"})
+            if (::access((fs::path(dir) / name).c_str(), X_OK) == 0) return (fs::path(dir) / name).string();
+    return "";
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// The DOM of `url` once headless Chromium (a fresh profile) has run the page's scripts. A virtual time budget makes
+// Chromium dump the DOM only when the page is idle (no fetch pending, no task left), so the dump is the state after
+// the self-test, however fast the machine. `timeout` only guards against a Chromium that hangs.
+std::string dom_after_scripts(const std::string& chromium, const fs::path& work, const std::string& url) {
+    const fs::path out = work / "dom.html";
+    const std::string command = "timeout 120 '" + chromium +
+                                "' --headless=new --no-sandbox --disable-gpu --disable-quic --no-first-run "
+                                "--disable-background-networking --disable-component-update --disable-sync "
+                                "--user-data-dir='" + (work / "profile").string() + "' --window-size=1200,1000 "
+                                "--virtual-time-budget=20000 --dump-dom '" + url + "' > '" + out.string() + "' 2> '" +
+                                (work / "chromium.err").string() + "'";
+    const int status = std::system(command.c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command << "\n" << read_text(work / "chromium.err");
+    return read_text(out);
+}
+
+// The text of the element that opens with `open` (up to the next '<'), with the serializer's escapes undone.
+std::string element_text(const std::string& dom, const std::string& open) {
+    const size_t start = dom.find(open);
+    if (start == std::string::npos) return "";
+    const size_t from = dom.find('>', start) + 1;
+    std::string text = dom.substr(from, dom.find('<', from) - from);
+    for (const auto& [escaped, plain] : {std::pair<std::string, std::string>{"&quot;", "\""}, {"&lt;", "<"},
+                                         {"&gt;", ">"}, {"&amp;", "&"}})
+        for (size_t at = text.find(escaped); at != std::string::npos; at = text.find(escaped, at + 1))
+            text.replace(at, escaped.size(), plain);
+    return text;
+}
+
+// 64-bit FNV-1a, the test's own.
+std::string fnv1a_hex(const std::string& bytes) {
+    uint64_t hash = 0xcbf29ce484222325ull;
+    for (const unsigned char byte : bytes) hash = (hash ^ byte) * 0x100000001b3ull;
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+std::string query_of(const nlohmann::json& params) {
+    std::string query;
+    for (const auto& [name, value] : params.items())
+        query += (query.empty() ? "" : "&") + name + "=" + value.get<std::string>();
+    return query;
+}
+
+// The first logged frame after `after` (an index into frames) that `wanted` accepts; null when none.
+const nlohmann::json* find_frame(const nlohmann::json& frames, size_t after,
+                                 const std::function<bool(const nlohmann::json&)>& wanted) {
+    for (size_t i = after + 1; i < frames.size(); ++i)
+        if (wanted(frames[i])) return &frames[i];
+    return nullptr;
+}
+
+TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSends) {
+    const std::string chromium = find_chromium();
+    if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (bash .ci/install installs it)";
+    TempDir dir;
+    RunningViewer viewer = start_viewer(kTeapot, dir / "viewer.err");
+    ASSERT_GT(viewer.port, 0) << viewer.first_line << "\n" << viewer.log();
+
+    const std::string dom = dom_after_scripts(chromium, dir.path(), viewer.url() + "?selftest=1");
+    const std::string report_text = element_text(dom, "<pre id=\"selftest\"");
+    ASSERT_FALSE(report_text.empty()) << "the self-test wrote no report\n" << dom.substr(0, 3000);
+    const nlohmann::json report = nlohmann::json::parse(report_text);
+    const nlohmann::json log = nlohmann::json::parse(viewer.client().Get("/log")->body);
+    const nlohmann::json& frames = log["frames"];
+    SCOPED_TRACE("page report: " + report.dump() + "\nserver log: " + log.dump());
+
+    // The server's side. The first frame is the scene's own.
+    ASSERT_GE(frames.size(), 1u);
+    const nlohmann::json& first = frames[0];
+    EXPECT_EQ(first["shading"], "blinn-phong");
+    EXPECT_EQ(first["yaw"], 0.0);
+    EXPECT_EQ(first["pitch"], 0.0);
+    EXPECT_EQ(first["distance"], 1.0);
+    // Clicking flat made the page ask for flat, and flat is another image.
+    const nlohmann::json* flat = find_frame(frames, 0, [](const nlohmann::json& f) { return f["shading"] == "flat"; });
+    ASSERT_NE(flat, nullptr) << "no frame was rendered with shading=flat";
+    EXPECT_NE((*flat)["png_fnv1a64"], first["png_fnv1a64"]);
+    EXPECT_EQ((*flat)["yaw"], first["yaw"]);
+    // Dragging moved the camera: a later flat frame with another yaw and pitch, another eye, another image.
+    const nlohmann::json* dragged = find_frame(frames, (*flat)["index"], [&](const nlohmann::json& f) {
+        return f["yaw"] != (*flat)["yaw"] || f["pitch"] != (*flat)["pitch"];
+    });
+    ASSERT_NE(dragged, nullptr) << "no frame after the flat one has another yaw or pitch";
+    EXPECT_NE((*dragged)["yaw"], (*flat)["yaw"]);
+    EXPECT_NE((*dragged)["pitch"], (*flat)["pitch"]);
+    EXPECT_NE((*dragged)["eye"], (*flat)["eye"]);
+    EXPECT_EQ((*dragged)["shading"], "flat");
+    EXPECT_NE((*dragged)["png_fnv1a64"], (*flat)["png_fnv1a64"]);
+    // The wheel moved it back.
+    const nlohmann::json* zoomed = find_frame(frames, (*dragged)["index"], [&](const nlohmann::json& f) {
+        return f["distance"].get<double>() > (*dragged)["distance"].get<double>();
+    });
+    ASSERT_NE(zoomed, nullptr) << "no frame after the drag is farther away";
+    EXPECT_NE((*zoomed)["png_fnv1a64"], (*dragged)["png_fnv1a64"]);
+
+    // The page showed those frames: the hash it took of the bytes it drew is the logged hash of the same frame.
+    ASSERT_EQ(report["steps"].size(), 4u);
+    for (const nlohmann::json& step : report["steps"]) {
+        const nlohmann::json& shown = step["frame"];
+        const size_t index = shown["index"];
+        ASSERT_LT(index, frames.size()) << step["name"];
+        EXPECT_EQ(shown["hash"], frames[index]["png_fnv1a64"]) << step["name"];
+        EXPECT_EQ(shown["params"]["shading"], frames[index]["shading"]) << step["name"];
+    }
+    EXPECT_EQ(report["steps"][1]["frame"]["index"], (*flat)["index"]);
+    // The log's hashes are of the bytes the server sends: the dragged frame, asked for again, hashed here.
+    const nlohmann::json& dragged_params = report["steps"][2]["frame"]["params"];
+    const httplib::Result again = viewer.client().Get(("/render?" + query_of(dragged_params)).c_str());
+    ASSERT_TRUE(again);
+    EXPECT_EQ(fnv1a_hex(again->body), (*dragged)["png_fnv1a64"]);
+
+    // And the page's own verdict.
+    EXPECT_EQ(report["pass"], true);
+    EXPECT_NE(dom.find("data-selftest=\"pass\""), std::string::npos);
+    EXPECT_EQ(viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << viewer.log();
+}
+
+}  // namespace
+}  // namespace raster::test_support

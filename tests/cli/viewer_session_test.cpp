@@ -1,0 +1,140 @@
+// `raster view`'s frames in-process: the first frame is `raster render`'s image, a request changes only its own
+// frame, bad frames are refused, the filter reaches textured materials, and the log records what was sent. PNG bytes
+// are compared with ==, so that a failure does not print them.
+#include "apps/viewer_session.h"
+
+#include <gtest/gtest.h>
+
+#include "raster/formats/scene_loader.h"
+#include "raster/image/image.h"
+#include "raster/pipeline/render.h"
+
+namespace raster::cli {
+namespace {
+
+const std::string kScenes = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
+
+RenderOptions frame_options() {
+    RenderOptions options;
+    options.keep_visibility = false;
+    return options;
+}
+
+ViewRequest shaded(ShadingMode shading) {
+    ViewRequest request;
+    request.shading = shading;
+    return request;
+}
+
+// A checkered floor seen at a grazing angle, where the filters disagree.
+Scene checkered_floor() {
+    return parse_scene("image: {width: 64, height: 48}\n"
+                       "camera: {eye: [0, 1, 4], target: [0, 0, -4], fov: 50}\n"
+                       "render: {shading: unlit}\n"
+                       "meshes:\n"
+                       "  - vertices: [[-8, 0, 4], [8, 0, 4], [8, 0, -20], [-8, 0, -20]]\n"
+                       "    faces: [[0, 1, 2], [0, 2, 3]]\n"
+                       "    uvs: [[0, 0], [16, 0], [16, 24], [0, 24]]\n"
+                       "    material: {texture: ../textures/checker.png, filter: nearest}\n",
+                       kScenes + "checkered_floor.yaml");
+}
+
+TEST(ViewerSession, theFirstFrameIsWhatRasterRenderWrites) {
+    const Scene scene = load_scene(kScenes + "teapot.yaml");
+    const std::vector<uint8_t> rendered = encode_image(render(scene, frame_options()).image, ImageFormat::png);
+    ViewerSession session(scene, frame_options());
+    const ViewerFrame frame = session.render({});
+    EXPECT_TRUE(frame.png == std::string(rendered.begin(), rendered.end()));
+    EXPECT_EQ(frame.record.png_fnv1a, fnv1a_64(frame.png));
+    EXPECT_EQ(frame.record.shading, ShadingMode::blinn_phong);
+    EXPECT_EQ(frame.record.filter, "scene");
+    EXPECT_EQ(frame.record.eye, scene.camera.eye);
+}
+
+TEST(ViewerSession, eachRequestStartsFromTheSceneAsLoaded) {
+    ViewerSession session(load_scene(kScenes + "teapot.yaml"), frame_options());
+    const ViewerFrame first = session.render({});
+    const ViewerFrame flat = session.render(shaded(ShadingMode::flat));
+    ViewRequest orbited;
+    orbited.yaw_degrees = 30.0;
+    orbited.distance = 1.5;
+    const ViewerFrame moved = session.render(orbited);
+    const ViewerFrame again = session.render({});
+    EXPECT_FALSE(flat.png == first.png);
+    EXPECT_FALSE(moved.png == first.png);
+    EXPECT_EQ(moved.record.shading, ShadingMode::blinn_phong);  // the flat request did not stay
+    EXPECT_TRUE(again.png == first.png);                         // nor did the orbit
+    EXPECT_EQ(again.record.eye, first.record.eye);
+    EXPECT_EQ(again.record.index, 3u);
+}
+
+TEST(ViewerSession, everyShadingModeGivesItsOwnImage) {
+    ViewerSession session(load_scene(kScenes + "teapot.yaml"), frame_options());
+    std::set<std::string> images;
+    for (const ShadingMode mode : {ShadingMode::unlit, ShadingMode::flat, ShadingMode::gouraud, ShadingMode::phong,
+                                   ShadingMode::blinn_phong, ShadingMode::cel, ShadingMode::gooch})
+        images.insert(session.render(shaded(mode)).png);
+    EXPECT_EQ(images.size(), 7u);
+}
+
+TEST(ViewerSession, aFrameTheSceneCannotHaveIsRefused) {
+    Scene scene = load_scene(kScenes + "single_triangle.yaml");
+    scene.settings.pattern = SamplePattern::grid;
+    ViewerSession session(scene, frame_options());
+    ViewRequest two_samples;
+    two_samples.samples = 2;  // not a square
+    EXPECT_THROW(session.render(two_samples), ViewRequestError);
+    two_samples.samples = 4;
+    EXPECT_NO_THROW(session.render(two_samples));
+    EXPECT_EQ(session.log()["frames_served"], 1);  // the refused one is not a frame
+}
+
+TEST(ViewerSession, theFilterReachesEveryTexturedMaterial) {
+    ViewerSession session(checkered_floor(), frame_options());
+    EXPECT_EQ(session.state()["scene_settings"]["filter"], "nearest");
+    EXPECT_EQ(session.state()["textured"], true);
+    ViewRequest request;
+    const std::string scene_own = session.render(request).png;
+    request.filter = TextureFilter::nearest;
+    EXPECT_TRUE(session.render(request).png == scene_own);
+    request.filter = TextureFilter::trilinear;
+    const ViewerFrame trilinear = session.render(request);
+    EXPECT_FALSE(trilinear.png == scene_own);
+    EXPECT_EQ(trilinear.record.filter, "trilinear");
+    request.filter = std::nullopt;
+    EXPECT_TRUE(session.render(request).png == scene_own);  // the trilinear copy left the scene as it was
+}
+
+TEST(ViewerSession, theLogAndStateSayWhatWasServed) {
+    ViewerSession session(load_scene(kScenes + "teapot.yaml"), frame_options());
+    EXPECT_TRUE(session.state()["last_frame"].is_null());
+    ViewRequest request = shaded(ShadingMode::cel);
+    request.samples = 4;
+    request.msaa = true;
+    request.pitch_degrees = 20.0;
+    const ViewerFrame frame = session.render(request);
+    const nlohmann::json log = session.log();
+    ASSERT_EQ(log["frames"].size(), 1u);
+    const nlohmann::json& record = log["frames"][0];
+    EXPECT_EQ(record["shading"], "cel");
+    EXPECT_EQ(record["samples"], 4);
+    EXPECT_EQ(record["msaa"], true);
+    EXPECT_EQ(record["pitch"], 20.0);
+    EXPECT_EQ(record["png_bytes"], frame.png.size());
+    EXPECT_EQ(record["png_fnv1a64"], hex64(fnv1a_64(frame.png)));
+    EXPECT_GT(record["eye"][1].get<double>(), 3.2);  // raised
+    const nlohmann::json state = session.state();
+    EXPECT_EQ(state["last_frame"], record);
+    EXPECT_EQ(state["scene_settings"]["shading"], "blinn-phong");  // the scene's own, unchanged
+    EXPECT_EQ(state["scene_settings"]["filter"], "none");
+    EXPECT_NEAR(state["camera"]["elevation_degrees"].get<double>(), 18.07, 0.01);
+}
+
+TEST(ViewerSession, fnv1aIsTheStandardOne) {
+    EXPECT_EQ(fnv1a_64(""), 0xcbf29ce484222325ull);
+    EXPECT_EQ(fnv1a_64("a"), 0xaf63dc4c8601ec8cull);
+    EXPECT_EQ(hex64(fnv1a_64("foobar")), "85944171f73967e8");
+}
+
+}  // namespace
+}  // namespace raster::cli
