@@ -21,7 +21,7 @@ std::string scene_filter_name(const Scene& scene) {
     std::set<std::string> filters;
     for (const SceneMesh& mesh : scene.meshes)
         for_each_material(mesh, [&](const Material& material) {
-            if (material.texture) filters.insert(to_string(material.texture->filter));
+            if (material.texture) filters.insert(to_string(sampler_of(*material.texture, scene.settings.texture_filter).filter));
         });
     if (filters.empty()) return "none";
     return filters.size() == 1 ? *filters.begin() : "mixed";
@@ -67,7 +67,8 @@ const Scene& ViewerSession::scene_with_filter(const std::optional<TextureFilter>
     auto found = filtered_scenes_.find(*filter);
     if (found == filtered_scenes_.end()) {
         Scene filtered = scene_;
-        set_texture_filter(filtered, *filter);
+        filtered.settings.texture_filter = *filter;
+        build_needed_mip_chains(filtered);  // once per filter: the chains are kept with the cached scene
         found = filtered_scenes_.emplace(*filter, std::move(filtered)).first;
     }
     return found->second;
