@@ -32,6 +32,15 @@ Sandbox& scene_sandbox() {
          "property list uchar int vertex_indices\nend_header\n"
          "-1 -1 0 255 0 0\n1 -1 0 0 255 0\n1 1 0 0 0 255\n-1 1 0 255 255 0\n4 0 1 2 3\n"},
         {"tri_binary.ply", binary_triangle_ply()},
+        // A textured OBJ with its MTL library and image, and a PLY with texture coordinates: the texture paths.
+        {"tex.ppm", std::string("P6\n2 2\n255\n") + std::string("\xff\x00\x00\x00\xff\x00\x00\x00\xff\xff\xff\xff", 12)},
+        {"textured.obj", "mtllib textured.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                         "usemtl tex\nf 1/1 2/2 3/3\nusemtl plain\nf 1/1 3/3 4/4\n"},
+        {"textured.mtl", "newmtl tex\nKd 1 1 1\nmap_Kd tex.ppm\nnewmtl plain\nKd 0.5 0.2 0.1\n"},
+        {"uv.ply",
+         "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+         "property float u\nproperty float v\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+         "-1 -1 0 0 0\n1 -1 0 4 0\n0 1 0 2 3\n3 0 1 2\n"},
     });
     return sandbox;
 }
