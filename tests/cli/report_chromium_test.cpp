@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/cli.h"
+#include "tests/support/headless_chromium.h"
 
 namespace raster::cli {
 namespace {
@@ -22,37 +23,15 @@ namespace fs = std::filesystem;
 
 const std::string kCorpus = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/";
 
-std::string find_chromium() {
-    const char* path = std::getenv("PATH");
-    std::istringstream dirs(path ? path : "");
-    for (std::string dir; std::getline(dirs, dir, ':');)
-        for (const char* name : {"chromium", "chromium-browser"})
-            if (::access((fs::path(dir) / name).c_str(), X_OK) == 0) return (fs::path(dir) / name).string();
-    return "";
-}
+using test_support::find_chromium;
+using test_support::read_text;
 
-std::string read_text(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
-// The DOM of `page` after headless Chromium (a fresh profile) has loaded it and run its scripts. With a virtual time
-// budget Chromium dumps the DOM only once the page is idle: every image fetched, every load handler and task run,
-// and the budget's timers fired. That is a state, not a moment, so the result does not depend on the machine's
-// speed. The `timeout` only guards against a Chromium that hangs, far above the few seconds a dump takes.
-std::string dom_after_scripts(const std::string& chromium, const fs::path& work, const fs::path& page) {
-    static int run = 0;
-    const fs::path profile = work / ("profile-" + std::to_string(run++));
-    const fs::path out = work / "chromium.out";
-    const std::string command = "timeout 600 '" + chromium +
-                                "' --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-                                "--disable-background-networking --disable-component-update --disable-sync "
-                                "--user-data-dir='" + profile.string() + "' --window-size=1400,1800 "
-                                "--virtual-time-budget=10000 --dump-dom 'file://" + fs::absolute(page).string() +
-                                "' > '" + out.string() + "' 2> '" + (work / "chromium.err").string() + "'";
-    const int status = std::system(command.c_str());
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command << "\n" << read_text(work / "chromium.err");
-    return read_text(out);
+// The DOM of the report page `page` once Chromium has loaded it and run its scripts (test_support::dom_after_scripts).
+std::string report_dom(const std::string& chromium, const fs::path& work, const fs::path& page) {
+    test_support::DumpOptions options;
+    options.window_width = 1400;
+    options.window_height = 1800;
+    return test_support::dom_after_scripts(chromium, work, "file://" + fs::absolute(page).string(), options);
 }
 
 size_t occurrences(const std::string& text, const std::string& needle) {
@@ -132,7 +111,7 @@ TEST_F(ReportInChromium, everyRowRendersWithAllItsImages) {
             EXPECT_TRUE(fs::exists(dir / scene["images"][image].get<std::string>())) << scene["name"] << " " << image;
 
     const fs::path page = with_pointer_script(dir / "index.html");
-    const std::string dom = dom_after_scripts(chromium, work, page);
+    const std::string dom = report_dom(chromium, work, page);
     // The page's script ran on load: every row's three images decoded, so every row is marked rendered.
     EXPECT_NE(dom.find("data-rows-rendered=\"3\""), std::string::npos) << dom.substr(0, 2000);
     EXPECT_EQ(occurrences(dom, "data-rendered=\"yes\""), 3u);
@@ -147,7 +126,7 @@ TEST_F(ReportInChromium, everyRowRendersWithAllItsImages) {
 
     // The check can fail: with one image gone, its row is no longer marked rendered.
     fs::remove(dir / summary["scenes"][1]["images"]["oracle"].get<std::string>());
-    const std::string broken = dom_after_scripts(chromium, work, page);
+    const std::string broken = report_dom(chromium, work, page);
     EXPECT_NE(broken.find("data-rows-rendered=\"2\""), std::string::npos);
     EXPECT_EQ(occurrences(broken, "data-rendered=\"no\""), 1u);
 }

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/support/headless_chromium.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/viewer_process.h"
 
@@ -24,34 +25,13 @@ namespace fs = std::filesystem;
 
 const std::string kTeapot = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/teapot.yaml";
 
-std::string find_chromium() {
-    const char* path = std::getenv("PATH");
-    std::istringstream dirs(path ? path : "");
-    for (std::string dir; std::getline(dirs, dir, ':');)
-        for (const char* name : {"chromium", "chromium-browser"})
-            if (::access((fs::path(dir) / name).c_str(), X_OK) == 0) return (fs::path(dir) / name).string();
-    return "";
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
-
-// The DOM of `url` once headless Chromium (a fresh profile) has run the page's scripts. A virtual time budget makes
-// Chromium dump the DOM only when the page is idle (no fetch pending, no task left), so the dump is the state after
-// the self-test, however fast the machine. `timeout` only guards against a Chromium that hangs.
-std::string dom_after_scripts(const std::string& chromium, const fs::path& work, const std::string& url) {
-    const fs::path out = work / "dom.html";
-    const std::string command = "timeout 120 '" + chromium +
-                                "' --headless=new --no-sandbox --disable-gpu --disable-quic --no-first-run "
-                                "--disable-background-networking --disable-component-update --disable-sync "
-                                "--user-data-dir='" + (work / "profile").string() + "' --window-size=1200,1000 "
-                                "--virtual-time-budget=20000 --dump-dom '" + url + "' > '" + out.string() + "' 2> '" +
-                                (work / "chromium.err").string() + "'";
-    const int status = std::system(command.c_str());
-    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command << "\n" << read_text(work / "chromium.err");
-    return read_text(out);
+// The DOM of `url` after the page's self-test: Chromium's new headless mode, 20 s of virtual time.
+std::string self_test_dom(const std::string& chromium, const fs::path& work, const std::string& url) {
+    DumpOptions options;
+    options.headless = "--headless=new";
+    options.virtual_time_ms = 20000;
+    options.timeout_s = 120;
+    return test_support::dom_after_scripts(chromium, work, url, options);
 }
 
 // The text of the element that opens with `open` (up to the next '<'), with the serializer's escapes undone.
@@ -98,7 +78,7 @@ TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSe
     RunningViewer viewer = start_viewer(kTeapot, dir / "viewer.err");
     ASSERT_GT(viewer.port, 0) << viewer.first_line << "\n" << viewer.log();
 
-    const std::string dom = dom_after_scripts(chromium, dir.path(), viewer.url() + "?selftest=1");
+    const std::string dom = self_test_dom(chromium, dir.path(), viewer.url() + "?selftest=1");
     const std::string report_text = element_text(dom, "<pre id=\"selftest\"");
     ASSERT_FALSE(report_text.empty()) << "the self-test wrote no report\n" << dom.substr(0, 3000);
     const nlohmann::json report = nlohmann::json::parse(report_text);
