@@ -43,11 +43,11 @@ inline constexpr int kLodRoundings = 2;
 // componentwise, k = |M|_F |M^-1|_F and e = |dM|_F / |M|_F, unbounded where k e >= 1/2; the columns are stored
 // as floats (u more, relative). The barycentrics raster uses
 // are anywhere in the sample's barycentric box (half-widths db); W and the products then add, per component i,
-//   |dg_i| <= |W| (|dc_i| + db_i |s| + |b_i| |ds|) + |dW| |c_i - b_i s| + gamma_4 |W| (|c_i| + |b_i| |s|),
+//   |dg_i| <= |W| (|dc_i| + db_i |s| + |b_i| |ds|) + |dW| |c_i - b_i s| + gamma_5 |W| (|c_i| + |b_i| |s|),
 //   s = 1 . c, |ds| <= |dc|_1 + gamma_2 |c|_1, |dW| <= |w| . db + |dw| . |b| + gamma_3 |w| . |b|,
 // and duv = sum_i g_i uv_i adds gamma_3 of sum_i |g_i| |uv_i|.
 inline constexpr int kColumnRoundings = 1;
-inline constexpr int kGradientRoundings = 4;
+inline constexpr int kGradientRoundings = 5;  // with the footprint step's product
 inline constexpr int kWeightRoundings = 3;
 inline constexpr int kUvDerivativeRoundings = 3;
 

@@ -41,6 +41,8 @@ UvDerivatives ray_differential(const OracleCamera& camera, const glm::dvec3 view
 
 OracleTextureSampling::OracleTextureSampling(const Scene& scene, const OracleScene& geometry)
     : geometry_(geometry), textures_(scene), filter_override_(scene.settings.texture_filter) {
+    const RenderSettings& settings = scene.settings;
+    step_ = settings.msaa || settings.samples <= 1 ? 1.0 : 1.0 / std::sqrt(static_cast<double>(settings.samples));
     triangles_.resize(geometry.triangles.size());
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
         const OracleTriangle& t = geometry.triangles[id];
@@ -67,7 +69,13 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
         half[i] = 0.5 * (bary[i].hi - bary[i].lo);
     }
     const glm::dvec3 on_plane = middle / (middle.x + middle.y + middle.z);
-    const UvDerivatives exact = ray_differential(geometry_.camera, t.view, t.uv, on_plane);
+    UvDerivatives exact = ray_differential(geometry_.camera, t.view, t.uv, on_plane);
+    // README "Textures": under SSAA each of the N samples filters 1/sqrt(N) of the pixel's side; the derivatives
+    // are linear in the step.
+    exact.d_dx *= step_;
+    exact.d_dy *= step_;
+    exact.dbary_dx *= step_;
+    exact.dbary_dy *= step_;
     half += glm::abs(on_plane - middle);
     const GradientError gradient = gradient_error(t.error, on_plane, half);
     TextureFootprintBox box;
@@ -79,8 +87,8 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
     for (int i = 0; i < 3; ++i) {
         magnitude_u += bary[i].magnitude() * std::fabs(t.uv[i].x);
         magnitude_v += bary[i].magnitude() * std::fabs(t.uv[i].y);
-        error_dx += gradient.x[i] * glm::abs(t.uv[i]);
-        error_dy += gradient.y[i] * glm::abs(t.uv[i]);
+        error_dx += step_ * gradient.x[i] * glm::abs(t.uv[i]);
+        error_dy += step_ * gradient.y[i] * glm::abs(t.uv[i]);
         magnitude_dx += std::fabs(exact.dbary_dx[i]) * glm::abs(t.uv[i]);
         magnitude_dy += std::fabs(exact.dbary_dy[i]) * glm::abs(t.uv[i]);
     }

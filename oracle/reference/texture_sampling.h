@@ -48,6 +48,7 @@ private:
     const OracleScene& geometry_;
     OracleTextures textures_;
     std::optional<TextureFilter> filter_override_;  // the render settings' texture_filter
+    double step_ = 1.0;                             // the footprint step in pixels: 1/sqrt(N) under SSAA
     std::vector<Triangle> triangles_;  // per scene triangle; filled for textured ones
 };
 

@@ -36,6 +36,9 @@ BarycentricGradient barycentric_gradient(const glm::vec4& a, const glm::vec4& b,
 }
 
 TextureLookup::TextureLookup(const Scene& scene, const TransformedScene& geometry) {
+    // SSAA's footprint is a sample's share of the pixel, 1/sqrt(N) of its side; MSAA shades, and so filters, per pixel.
+    const RenderSettings& settings = scene.settings;
+    step_ = settings.msaa || settings.samples <= 1 ? 1.0f : 1.0f / std::sqrt(static_cast<float>(settings.samples));
     corner_uv_.resize(geometry.triangles.size());
     gradient_.resize(geometry.triangles.size());
     const int width = scene.settings.width, height = scene.settings.height;
@@ -57,8 +60,8 @@ TexturePoint TextureLookup::at(uint32_t triangle, const glm::vec3& bary) const {
     const TriangleUvs& corners = corner_uv_[triangle];
     const BarycentricGradient& g = gradient_[triangle];
     const float w = glm::dot(bary, g.clip_w);
-    const glm::vec3 dbary_dx = w * (g.column_x - bary * (g.column_x.x + g.column_x.y + g.column_x.z));
-    const glm::vec3 dbary_dy = w * (g.column_y - bary * (g.column_y.x + g.column_y.y + g.column_y.z));
+    const glm::vec3 dbary_dx = (step_ * w) * (g.column_x - bary * (g.column_x.x + g.column_x.y + g.column_x.z));
+    const glm::vec3 dbary_dy = (step_ * w) * (g.column_y - bary * (g.column_y.x + g.column_y.y + g.column_y.z));
     TexturePoint point;
     for (int i = 0; i < 3; ++i) {
         point.uv += bary[i] * corners.uv[i];

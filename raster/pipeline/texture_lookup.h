@@ -30,11 +30,13 @@ struct BarycentricGradient {
 BarycentricGradient barycentric_gradient(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, int width,
                                          int height);
 
-// Texture coordinates and their derivatives at one point of a triangle.
+// Texture coordinates and their derivatives at one point of a triangle, over one footprint step: a pixel, or under
+// SSAA with N samples 1/sqrt(N) of a pixel (each sample filters its own share of the pixel, and the resolve
+// averages them); MSAA, shading once per pixel, steps a whole pixel.
 struct TexturePoint {
     glm::vec2 uv{0.0f};
-    glm::vec2 duv_dx{0.0f};  // per pixel to the right
-    glm::vec2 duv_dy{0.0f};  // per pixel down
+    glm::vec2 duv_dx{0.0f};  // per footprint step to the right
+    glm::vec2 duv_dy{0.0f};  // per footprint step down
 };
 
 // For every triangle of the scene whose material is textured: its three texture coordinates and its gradient.
@@ -51,6 +53,7 @@ public:
 private:
     std::vector<TriangleUvs> corner_uv_;         // per global triangle
     std::vector<BarycentricGradient> gradient_;  // per global triangle
+    float step_ = 1.0f;                          // the footprint step, in pixels
 };
 
 }  // namespace raster
