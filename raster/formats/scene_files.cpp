@@ -83,8 +83,7 @@ void finish_scene_textures(Scene& scene) {
         } else if (mesh.data.corner_uvs.empty()) {
             std::fprintf(stderr, "%s: warning: mesh '%s' has a textured material but no texture coordinates on every "
                                  "corner; it is drawn untextured\n", scene.path.c_str(), mesh.source.c_str());
-            mesh.material.texture.reset();
-            for (MaterialPart& part : mesh.parts) part.material.texture.reset();
+            for_each_material(mesh, [](Material& m) { m.texture.reset(); });
         }
     }
     build_needed_mip_chains(scene);

@@ -60,11 +60,12 @@ struct SceneMesh {
 // The material of the mesh's local triangle `triangle`: its part's, or the mesh's.
 const Material& material_of(const SceneMesh& mesh, uint32_t triangle);
 
-// Every material a mesh uses, its own first (for checks and loaders that treat them all alike).
-template <typename Visit>
-void for_each_material(const SceneMesh& mesh, Visit visit) {
+// Every material a mesh uses, its own first (for checks and loaders that treat them all alike); `Mesh` is
+// SceneMesh or const SceneMesh, and the visit gets the materials as the mesh holds them.
+template <typename Mesh, typename Visit>
+void for_each_material(Mesh& mesh, Visit visit) {
     visit(mesh.material);
-    for (const MaterialPart& part : mesh.parts) visit(part.material);
+    for (auto& part : mesh.parts) visit(part.material);
 }
 
 // Gooch et al. 1998's cool-to-warm tones: k_cool = (0, 0, blue) + alpha k_d, k_warm = (yellow, yellow, 0) + beta k_d,

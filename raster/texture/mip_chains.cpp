@@ -8,21 +8,9 @@
 
 namespace raster {
 
-namespace {
-
-template <typename Visit>
-void for_each_material(Scene& scene, Visit visit) {
-    for (SceneMesh& mesh : scene.meshes) {
-        visit(mesh.material);
-        for (MaterialPart& part : mesh.parts) visit(part.material);
-    }
-}
-
-}  // namespace
-
 void build_needed_mip_chains(Scene& scene) {
     std::map<const Texture*, std::shared_ptr<const Texture>> built;
-    for_each_material(scene, [&](Material& material) {
+    for (SceneMesh& mesh : scene.meshes) for_each_material(mesh, [&](Material& material) {
         if (!material.texture || !uses_mip_chain(sampler_of(*material.texture, scene.settings.texture_filter).filter)) return;
         std::shared_ptr<const Texture>& texture = material.texture->texture;
         const TextureLevel& base = texture->levels.front();
