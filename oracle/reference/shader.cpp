@@ -238,9 +238,13 @@ Interval3 OracleShader::shade(uint32_t id, const Interval3& bary) const {
                 Interval3 corner_bary(Interval(0.0), Interval(0.0), Interval(0.0));
                 corner_bary[k] = Interval(1.0);
                 const LitTerms& terms = corner_terms(id, k);
-                corners[k] = multiply_add(base_color(id, corner_bary), terms.diffuse, terms.specular, kCombineRoundings);
-                lit[k] = after_roundings(base_color(id, corner_bary) * terms.diffuse, 1);
-                highlight[k] = terms.specular;
+                const Interval3 base = base_color(id, corner_bary);
+                if (textured) {
+                    lit[k] = after_roundings(base * terms.diffuse, 1);
+                    highlight[k] = terms.specular;
+                } else {
+                    corners[k] = multiply_add(base, terms.diffuse, terms.specular, kCombineRoundings);
+                }
             }
             if (textured)
                 return multiply_add(texel, interpolate(bary, lit), interpolate(bary, highlight), kCombineRoundings);
