@@ -86,6 +86,7 @@ bool floor_point(const Camera& camera, int width, int height, double sx, double 
 // the area-weighted footprints tile the image exactly, odd sizes included. Point sampling, dropped rows or
 // columns, or a wrong footprint for an odd size move the mean.
 RASTER_PROPERTY(MipChain, keepsTheImagesMean) {
+    static_cast<void>(impl);  // raster/texture's own functions: the sampler is not a pipeline stage
     const TextureImageCase c = *texture_images();
     RC_CLASSIFY(true, c.kind);
     const std::shared_ptr<const Texture> texture = chained(c.level);
@@ -109,6 +110,7 @@ RASTER_PROPERTY(MipChain, keepsTheImagesMean) {
 // Wrap, against its definition, at texel centres (where no rounding can move a lookup to a neighbour): repeat
 // reads the same texel at u + n, mirror at 2n + u and 2n - u, clamp the edge texel past either end.
 RASTER_PROPERTY(Wrap, repeatsMirrorsAndClampsAsDocumented) {
+    static_cast<void>(impl);  // raster/texture's own functions: the sampler is not a pipeline stage
     const TextureImageCase c = *texture_images();
     const int i = *gen::inRange(0, c.level.width), j = *gen::inRange(0, c.level.height);
     const int n = *gen::inRange(-6, 7), m = *gen::inRange(-6, 7);
@@ -130,6 +132,7 @@ RASTER_PROPERTY(Wrap, repeatsMirrorsAndClampsAsDocumented) {
 // Trilinear has no jump where the level changes: across an integer lod k, values at k - d and k + d differ by at
 // most 2 d times the largest level-to-level difference (at most 1 for texels in [0, 1]), plus float rounding.
 RASTER_PROPERTY(Trilinear, isContinuousWhereTheLevelChanges) {
+    static_cast<void>(impl);  // raster/texture's own functions: the sampler is not a pipeline stage
     const TextureImageCase c = *texture_images();
     const std::shared_ptr<const Texture> texture = chained(c.level);
     RC_PRE(texture->levels.size() >= 2);
@@ -147,6 +150,7 @@ RASTER_PROPERTY(Trilinear, isContinuousWhereTheLevelChanges) {
 // Along a plane receding from the camera, every pixel further up the screen (further away) has a level of detail
 // at least that of the pixel below it: the footprint only grows with distance.
 RASTER_PROPERTY(LevelOfDetail, growsAlongARecedingPlane) {
+    static_cast<void>(impl);  // raster/texture's own functions: the sampler is not a pipeline stage
     const int width = 160, height = 120;
     TextureLevel level;
     level.width = 1 << *gen::inRange(3, 11);
@@ -238,7 +242,7 @@ RASTER_DRAWING_PROPERTY(Texture, aCheckerboardInPerspectiveLandsWhereTheRaysSay)
             glm::i64vec2 square[4];
             bool inside = true;
             for (int k = 0; k < 4 && inside; ++k) {
-                glm::dvec2 xz;
+                glm::dvec2 xz(0.0);
                 inside = floor_point(scene.camera, width, height, x + 0.5 + (k & 1 ? 0.05 : -0.05),
                                      y + 0.5 + (k & 2 ? 0.05 : -0.05), xz) &&
                          xz.y < -0.2 && xz.y > -60.0 && std::fabs(xz.x) < 40.0;
