@@ -63,6 +63,7 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
             {"hidden_blocks", stats.hidden_blocks},
             {"ms_vertex", stats.ms_vertex},
             {"ms_setup", stats.ms_setup},
+            {"ms_shadow", stats.ms_shadow},
             {"ms_raster", stats.ms_raster},
             {"ms_shade", stats.ms_shade},
             {"ms_total", stats.ms_total}};

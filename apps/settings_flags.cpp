@@ -33,6 +33,19 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
     command.add_option("--hierarchical-z", flags.hierarchical_z,
                        "Hierarchical-Z occlusion culling: on (default) or off; never changes a pixel")
         ->check(CLI::IsMember({"on", "off"}));
+    command.add_flag("--shadows", flags.shadows, "Every light casts shadows (through a cube shadow map)");
+    command.add_option("--shadow-resolution", flags.shadow_resolution,
+                       "Shadow map texels per side of each cube face, 16..8192 (default 1024)")
+        ->check(CLI::Range(kMinShadowResolution, kMaxShadowResolution));
+    command.add_option("--shadow-bias", flags.shadow_bias,
+                       "Constant shadow bias, a fraction of the receiver's depth from the light, 0..1 (default 0.001)")
+        ->check(CLI::Range(0.0f, 1.0f));
+    command.add_option("--shadow-slope-bias", flags.shadow_slope_bias,
+                       "Slope-scaled shadow bias: times the receiver plane's depth change across the filter, 0..64 "
+                       "(default 1.5)")
+        ->check(CLI::Range(0.0f, 64.0f));
+    command.add_option("--pcf", flags.pcf, "Percentage-closer filtering: 1, 3 or 5 texels per side (default 1)")
+        ->check(CLI::IsMember({1, 3, 5}));
     command.add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
     command.add_option("--threads", flags.threads, "Worker threads, 0 = all cores (the output is the same for any count)")
         ->check(CLI::Range(0, 256));
@@ -58,7 +71,14 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     if (flags.depth_format) parse_depth_format(*flags.depth_format, settings.modes.depth);
     if (flags.clipping) parse_clipping(*flags.clipping, settings.modes.clipping);
     if (flags.hierarchical_z) settings.modes.hierarchical_z = *flags.hierarchical_z == "on";
+    if (flags.shadows)
+        for (Light& light : scene.lights) light.shadows = true;
+    if (flags.shadow_resolution) settings.shadows.resolution = *flags.shadow_resolution;
+    if (flags.shadow_bias) settings.shadows.bias = *flags.shadow_bias;
+    if (flags.shadow_slope_bias) settings.shadows.slope_bias = *flags.shadow_slope_bias;
+    if (flags.pcf) settings.shadows.pcf = *flags.pcf;
     if (std::string problem = settings_problem(settings); !problem.empty()) throw InputError("", 0, 0, problem);
+    validate_scene(scene);  // the shadow maps' memory, which depends on the lights
 }
 
 }  // namespace raster::cli

@@ -21,11 +21,15 @@ struct SettingsFlags {
     std::optional<int> snap_bits;
     std::optional<std::string> cull;
     std::optional<std::string> edges, interpolation, depth_format, clipping, hierarchical_z;
+    bool shadows = false;  // every light casts shadows
+    std::optional<int> shadow_resolution, pcf;
+    std::optional<float> shadow_bias, shadow_slope_bias;
     bool alpha = false;
     int threads = 0;
 };
 
-// Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, --alpha and --threads.
+// Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, the shadow flags, --alpha and
+// --threads.
 void register_settings_flags(CLI::App& command, SettingsFlags& flags);
 
 // Applies the flags given to the scene's settings; throws InputError when the result is not a valid frame.

@@ -29,7 +29,7 @@ RASTER_PROPERTY(Lighting, attenuatedLightFallsOffWithTheInverseSquareOfDistance)
     light.color = c.color;
     auto diffuse = [&](bool attenuate) {
         light.attenuate = attenuate;
-        return impl.stages.lighting(point, c.normal, c.normal, material, {light}, glm::vec3(0.0f), SpecularModel::blinn).diffuse;
+        return impl.stages.lighting(point, c.normal, c.normal, material, {light}, glm::vec3(0.0f), SpecularModel::blinn, nullptr).diffuse;
     };
     const glm::dvec3 attenuated(diffuse(true)), plain(diffuse(false));
     const glm::dvec3 offset = glm::dvec3(light.position) - glm::dvec3(point);

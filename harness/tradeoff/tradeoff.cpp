@@ -93,7 +93,7 @@ std::vector<uint64_t> covered_sample_counts(const Scene& scene, const Transforme
     RenderStats stats;
     const FrameParams frame =
         frame_params_for(scene, sample_offsets(scene.settings.samples, scene.settings.pattern), threads);
-    const std::vector<TriangleSetup> setups = set_up_triangles(scene, geometry, frame, PipelineStages{}, stats);
+    const std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, PipelineStages{}, scene.settings.cull_backfaces, stats);
     const int fixed_bits = frame.fixed_bits;
     const FixedSampleOffsets& offsets = frame.fixed_offsets;
     std::vector<uint64_t> per_setup(setups.size(), 0);

@@ -115,61 +115,6 @@ void read_camera(const Node& node, const DocumentReader& reader, Camera& camera)
         reader.fail(camera_node_to_blame({node, eye, target, up, fov, near, far}, problem->field), problem->message);
 }
 
-void read_render(const Node& node, const DocumentReader& reader, RenderSettings& settings) {
-    reader.expect_map(node, "render");
-    reader.check_keys(node, {"samples", "pattern", "msaa", "shading", "cull", "snap_bits", "ambient", "edges",
-                             "interpolation", "depth", "clipping", "hierarchical_z", "cel_bands", "gooch"});
-    if (const Node& v = reader.optional(node, "samples"); v.is_defined())
-        settings.samples = reader.integer(v, "samples", 1, 256);
-    if (const Node& v = reader.optional(node, "pattern"); v.is_defined()) {
-        if (!parse_sample_pattern(reader.string(v, "pattern"), settings.pattern))
-            reader.fail(v, "pattern must be 'standard' or 'grid'");
-    }
-    if (const Node& v = reader.optional(node, "msaa"); v.is_defined()) settings.msaa = reader.boolean(v, "msaa");
-    if (const Node& v = reader.optional(node, "shading"); v.is_defined()) {
-        if (!parse_shading_mode(reader.string(v, "shading"), settings.shading))
-            reader.fail(v, "shading must be unlit, flat, gouraud, phong, blinn-phong, cel or gooch");
-    }
-    if (const Node& v = reader.optional(node, "cel_bands"); v.is_defined())
-        settings.cel_bands = reader.integer(v, "cel_bands", 1, 64);
-    if (const Node& v = reader.optional(node, "gooch"); v.is_defined()) {
-        reader.expect_map(v, "gooch");
-        reader.check_keys(v, {"blue", "yellow", "alpha", "beta"});
-        auto tone = [&](const char* key, float& out) {
-            if (const Node& t = reader.optional(v, key); t.is_defined()) {
-                out = reader.finite_float(t, key);
-                if (out < 0.0f || out > 1.0f) reader.fail(t, std::string("gooch ") + key + " must be in [0, 1]");
-            }
-        };
-        tone("blue", settings.gooch.blue);
-        tone("yellow", settings.gooch.yellow);
-        tone("alpha", settings.gooch.alpha);
-        tone("beta", settings.gooch.beta);
-    }
-    if (const Node& v = reader.optional(node, "cull"); v.is_defined()) {
-        const std::string cull = reader.string(v, "cull");
-        if (cull != "none" && cull != "back") reader.fail(v, "cull must be 'none' or 'back'");
-        settings.cull_backfaces = cull == "back";
-    }
-    if (const Node& v = reader.optional(node, "snap_bits"); v.is_defined())
-        settings.snap_bits = reader.integer(v, "snap_bits", kMinSnapBits, kMaxSnapBits);
-    if (const Node& v = reader.optional(node, "ambient"); v.is_defined())
-        settings.ambient_light = read_color(v, reader, "render ambient");
-    // A precision mode: an optional key naming one of the values its parse function knows.
-    auto read_mode = [&](const char* key, auto parse, auto names, auto& out) {
-        if (const Node& v = reader.optional(node, key); v.is_defined()) {
-            if (!parse(reader.string(v, key), out)) reader.fail(v, std::string(key) + " must be one of " + names());
-        }
-    };
-    PrecisionModes& modes = settings.modes;
-    read_mode("edges", parse_edge_arithmetic, edge_arithmetic_names, modes.edges);
-    read_mode("interpolation", parse_interpolation, interpolation_names, modes.interpolation);
-    read_mode("depth", parse_depth_format, depth_format_names, modes.depth);
-    read_mode("clipping", parse_clipping, clipping_names, modes.clipping);
-    if (const Node& v = reader.optional(node, "hierarchical_z"); v.is_defined())
-        modes.hierarchical_z = reader.boolean(v, "hierarchical_z");
-}
-
 // The image size, sample count and frame memory together, once both sections are read, at the value to change.
 void check_settings(const Node& root, const DocumentReader& reader, const RenderSettings& settings) {
     const std::string problem = settings_problem(settings);
@@ -185,7 +130,7 @@ void check_settings(const Node& root, const DocumentReader& reader, const Render
 
 Light read_light(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "a light");
-    reader.check_keys(node, {"position", "color", "intensity", "attenuation"});
+    reader.check_keys(node, {"position", "color", "intensity", "attenuation", "shadows"});
     Light light;
     light.position = reader.vec3(reader.required(node, "position"), "light position");
     if (const Node& v = reader.optional(node, "color"); v.is_defined()) light.color = read_color(v, reader, "light color");
@@ -193,6 +138,7 @@ Light read_light(const Node& node, const DocumentReader& reader) {
         light.intensity = reader.finite_float(v, "light intensity");
     if (const Node& v = reader.optional(node, "attenuation"); v.is_defined())
         light.attenuate = reader.boolean(v, "light attenuation");
+    if (const Node& v = reader.optional(node, "shadows"); v.is_defined()) light.shadows = reader.boolean(v, "light shadows");
     return light;
 }
 
@@ -330,7 +276,7 @@ SceneMesh read_mesh(const Node& node, const DocumentReader& reader, const SceneF
 void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene) {
     reader.check_keys(root, {"image", "camera", "render", "lights", "meshes"});
     if (const Node& v = reader.optional(root, "image"); v.is_defined()) read_image(v, reader, scene.settings);
-    if (const Node& v = reader.optional(root, "render"); v.is_defined()) read_render(v, reader, scene.settings);
+    if (const Node& v = reader.optional(root, "render"); v.is_defined()) read_raster_render(v, reader, scene.settings);
     check_settings(root, reader, scene.settings);
     if (const Node& v = reader.optional(root, "camera"); v.is_defined()) read_camera(v, reader, scene.camera);
     if (const Node& v = reader.optional(root, "lights"); v.is_defined()) {

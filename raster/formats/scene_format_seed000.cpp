@@ -139,11 +139,12 @@ Seed000Transform read_transform(const Node& node, const DocumentReader& reader) 
 
 Seed000Light read_light(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "a light");
-    reader.check_keys(node, {"pos", "intensity", "color"});
+    reader.check_keys(node, {"pos", "intensity", "color", "shadows"});
     Seed000Light light;
     light.pos = reader.vec3(reader.required(node, "pos"), "light pos");
     light.intensity = non_negative(reader.required(node, "intensity"), reader, "light intensity");
     light.color_255 = color_255(reader.required(node, "color"), reader, "light color");
+    if (const Node& v = reader.optional(node, "shadows"); v.is_defined()) light.shadows = reader.boolean(v, "light shadows");
     return light;
 }
 
@@ -370,6 +371,7 @@ void read_seed000_scene(const Node& root, const DocumentReader& reader, const Me
             light.color = l.color_255 / 255.0f;
             light.intensity = l.intensity;
             light.attenuate = true;  // 1 / r^2
+            light.shadows = l.shadows;
             scene.lights.push_back(light);
         }
     }

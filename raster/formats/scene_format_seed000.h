@@ -39,6 +39,7 @@ struct Seed000Light {
     glm::vec3 pos{0.0f};
     float intensity = 1.0f;
     glm::vec3 color_255{255.0f};
+    bool shadows = false;  // raster's extension (README "Seed 000"): the document's shadow-map extra
 };
 
 // Everything a config says, read and checked; paths are resolved against the config file's folder.

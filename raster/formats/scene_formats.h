@@ -30,6 +30,8 @@ struct SceneFileLoaders {
     TextureFileLoader texture;
 };
 
+// The raster format's `render` section into `settings`.
+void read_raster_render(const Node& node, const DocumentReader& reader, RenderSettings& settings);
 void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
 void read_seed003_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
 // Seed 000 configs: the scene the config's task draws (see scene_format_seed000.h); read_seed000_config reads the

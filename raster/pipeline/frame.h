@@ -36,6 +36,7 @@ struct RenderStats {
     // Wall time of each stage. The tiled renderer rasterizes and shades tile by tile, interleaved: its ms_raster
     // and ms_shade split that interleaved time in proportion to the time its threads spent in each.
     double ms_vertex = 0, ms_setup = 0, ms_raster = 0, ms_shade = 0, ms_total = 0;
+    double ms_shadow = 0;  // rendering the shadow maps (their own vertex, setup and raster work), 0 without shadows
 };
 
 // Per-frame buffers a renderer keeps in its result, so that render_into on the same result reuses their memory

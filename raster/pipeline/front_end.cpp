@@ -21,10 +21,9 @@ TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages
     return geometry;
 }
 
-void set_up_triangles_into(const Scene& scene, const TransformedScene& geometry, const FrameParams& frame,
-                           const PipelineStages& stages, RenderStats& stats, RenderWorkspace& workspace) {
+void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
+                           bool cull, RenderStats& stats, RenderWorkspace& workspace) {
     // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
-    const bool cull = scene.settings.cull_backfaces;
     const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
     auto& chunk_setups = workspace.chunk_setups;
     chunk_setups.resize(chunks);
@@ -53,10 +52,10 @@ void set_up_triangles_into(const Scene& scene, const TransformedScene& geometry,
     stats.rasterized = setups.size();
 }
 
-std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry,
-                                            const FrameParams& frame, const PipelineStages& stages, RenderStats& stats) {
+std::vector<TriangleSetup> set_up_triangles(const TransformedScene& geometry, const FrameParams& frame,
+                                            const PipelineStages& stages, bool cull_backfaces, RenderStats& stats) {
     RenderWorkspace workspace;
-    set_up_triangles_into(scene, geometry, frame, stages, stats, workspace);
+    set_up_triangles_into(geometry, frame, stages, cull_backfaces, stats, workspace);
     return std::move(workspace.setups);
 }
 
@@ -67,9 +66,18 @@ FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const P
     FrontEnd out{run_vertex_stage_timed(scene, stages, result.stats),
                  frame_params_for(scene, stages.sample_offsets(settings.samples, settings.pattern), options.threads)};
     const auto start = Clock::now();
-    set_up_triangles_into(scene, out.geometry, out.frame, stages, result.stats, result.workspace);
+    set_up_triangles_into(out.geometry, out.frame, stages, settings.cull_backfaces, result.stats, result.workspace);
     result.stats.ms_setup = milliseconds_since(start);
     return out;
+}
+
+ShadowMaps build_shadow_maps(const Scene& scene, const FrontEnd& front, const RenderOptions& options,
+                             const PipelineStages& stages, RenderStats& stats) {
+    if (!has_shadows(scene) || scene.settings.shading == ShadingMode::unlit) return {};
+    const auto start = Clock::now();
+    ShadowMaps maps(scene, front.geometry.world_position, stages, {options.path, options.allow_simd, options.threads});
+    stats.ms_shadow = milliseconds_since(start);
+    return maps;
 }
 
 ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options) {

@@ -7,6 +7,7 @@
 #include "raster/pipeline/frame.h"
 #include "raster/pipeline/frame_params.h"
 #include "raster/pipeline/resolve.h"
+#include "raster/pipeline/shadow_maps.h"
 #include "raster/pipeline/stages.h"
 #include "raster/pipeline/vertex_stage.h"
 
@@ -15,14 +16,14 @@ namespace raster {
 // The vertex stage, for the attributes the scene's shading needs; counts triangles and times ms_vertex.
 TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages& stages, RenderStats& stats);
 
-// Culls, clips and sets up the vertex stage's triangles in parallel chunks, kept in draw order, into
-// workspace.setups; counts clipped and rasterized triangles. The caller times it.
-void set_up_triangles_into(const Scene& scene, const TransformedScene& geometry, const FrameParams& frame,
-                           const PipelineStages& stages, RenderStats& stats, RenderWorkspace& workspace);
+// Culls (when cull_backfaces), clips and sets up the vertex stage's triangles in parallel chunks, kept in draw
+// order, into workspace.setups; counts clipped and rasterized triangles. The caller times it.
+void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
+                           bool cull_backfaces, RenderStats& stats, RenderWorkspace& workspace);
 
 // The same into a fresh vector.
-std::vector<TriangleSetup> set_up_triangles(const Scene& scene, const TransformedScene& geometry,
-                                            const FrameParams& frame, const PipelineStages& stages, RenderStats& stats);
+std::vector<TriangleSetup> set_up_triangles(const TransformedScene& geometry, const FrameParams& frame,
+                                            const PipelineStages& stages, bool cull_backfaces, RenderStats& stats);
 
 // What the front end hands a renderer: the vertex stage's output and the frame; the setups are in the result's
 // workspace.
@@ -35,6 +36,11 @@ struct FrontEnd {
 // (timing ms_vertex and ms_setup) for the frame the scene and the options ask for.
 FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
                        RenderResult& result);
+
+// The shadow maps the frame needs (none unless a light casts shadows and the shading is lit), rendered with the
+// frame's stages and renderer; times ms_shadow.
+ShadowMaps build_shadow_maps(const Scene& scene, const FrontEnd& front, const RenderOptions& options,
+                             const PipelineStages& stages, RenderStats& stats);
 
 // The resolve parameters the scene's settings and the options ask for.
 ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options);

@@ -18,8 +18,9 @@ void render_reference_into(const Scene& scene, const RenderOptions& options, con
     stats.samples = result.visibility.size();
     stats.ms_raster = milliseconds_since(stage_start);
 
+    const ShadowMaps shadows = build_shadow_maps(scene, front, options, stages, stats);
     stage_start = Clock::now();
-    const Shader shader(scene, front.geometry, stages.lighting);
+    const Shader shader(scene, front.geometry, stages.lighting, &shadows);
     resolve_image(result.visibility, shader, resolve_params_for(scene, options), result.image);
     stats.ms_shade = milliseconds_since(stage_start);
 

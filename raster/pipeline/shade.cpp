@@ -1,4 +1,5 @@
-// Shading: Blinn-Phong and Phong lighting, evaluated per face (flat), per vertex (Gouraud) or per sample.
+// Shading: the lighting of the shading mode evaluated per face (flat), per vertex (Gouraud) or per sample, with
+// textures and shadow visibility applied per sample.
 #include "raster/pipeline/shade.h"
 
 #include <algorithm>
@@ -7,73 +8,10 @@
 #include <glm/geometric.hpp>
 
 #include "raster/pipeline/stylized_lighting.h"
+#include "raster/pipeline/shadow_maps.h"
 #include "raster/texture/texture_sampler.h"
 
 namespace raster {
-
-float specular_power(float base, float exponent) {
-    if (exponent >= 0.0f && exponent <= 256.0f && exponent == std::floor(exponent)) {
-        // Square and multiply: at most 16 multiplications for an integer exponent, several times faster than powf
-        // (most scenes' exponents are integers); relative error at most about n 2^-24 (shade.h).
-        unsigned n = static_cast<unsigned>(exponent);
-        float result = 1.0f, square = base;
-        while (n) {
-            if (n & 1u) result *= square;
-            n >>= 1;
-            if (n) square *= square;
-        }
-        return result;
-    }
-    return std::pow(base, exponent);
-}
-
-bool light_arrives(const Light& light, const glm::vec3& position, const glm::vec3& normal, LightArrival& out) {
-    glm::vec3 to_light = light.position - position;
-    const float distance_squared = glm::dot(to_light, to_light);
-    if (!(distance_squared > 0.0f)) return false;
-    to_light /= std::sqrt(distance_squared);
-    const float n_dot_l = glm::dot(normal, to_light);
-    if (n_dot_l <= 0.0f) return false;
-    glm::vec3 radiance = light.color * light.intensity;
-    if (light.attenuate) radiance /= distance_squared;
-    out = {to_light, n_dot_l, radiance};
-    return true;
-}
-
-float blinn_lobe(const glm::vec3& normal, const glm::vec3& to_light, const glm::vec3& to_eye) {
-    const glm::vec3 half = to_light + to_eye;
-    const float half_length_squared = glm::dot(half, half);
-    const float lobe = half_length_squared > 0.0f ? glm::dot(normal, half) / std::sqrt(half_length_squared) : 0.0f;
-    return lobe;
-}
-
-float highlight_of(float lobe, float exponent) {
-    // lobe^exponent with max(0, lobe); pow is skipped where it is 0 (and 0^0 = 1 kept for exponent 0).
-    const float highlight = lobe > 0.0f ? specular_power(lobe, exponent) : (exponent == 0.0f ? 1.0f : 0.0f);
-    return highlight;
-}
-
-LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
-                                const Material& material, const std::vector<Light>& lights,
-                                const glm::vec3& ambient_light, SpecularModel model) {
-    LightingTerms terms;
-    terms.diffuse = material.ambient * ambient_light;
-    for (const Light& light : lights) {
-        LightArrival arrival;
-        if (!light_arrives(light, position, normal, arrival)) continue;
-        const auto& [to_light, n_dot_l, radiance] = arrival;
-        float lobe;
-        if (model == SpecularModel::blinn) {
-            lobe = blinn_lobe(normal, to_light, to_eye);
-        } else {
-            const glm::vec3 reflected = 2.0f * n_dot_l * normal - to_light;
-            lobe = glm::dot(reflected, to_eye);
-        }
-        terms.diffuse += radiance * material.diffuse * n_dot_l;
-        terms.specular += radiance * material.specular * highlight_of(lobe, material.exponent);
-    }
-    return terms;
-}
 
 namespace {
 
@@ -88,7 +26,8 @@ bool any_mesh_has_parts(const Scene& scene) {
 
 }  // namespace
 
-Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting)
+Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting,
+               const ShadowMaps* shadows)
     : scene_(scene), geometry_(geometry), mode_(scene.settings.shading), lighting_(lighting) {
     if (any_mesh_has_parts(scene)) {
         triangle_material_.resize(geometry.triangles.size());
@@ -99,31 +38,48 @@ Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFun
     }
     const bool textured = has_textures(scene);
     if (textured) textures_ = TextureLookup(scene, geometry);
+    if (shadows && !shadows->empty() && mode_ != ShadingMode::unlit) {
+        shadows_ = shadows;
+        for (size_t light = 0; light < scene.lights.size(); ++light) {
+            if (shadows->casts(light)) shadowed_lights_.push_back(light);
+            else unshadowed_lights_.push_back(scene.lights[light]);
+        }
+        if (mode_ == ShadingMode::flat || mode_ == ShadingMode::gouraud)
+            terms_stride_ = 1 + static_cast<int>(shadowed_lights_.size());
+        face_normal_.resize(geometry.triangles.size());
+        for (uint32_t tri = 0; tri < geometry.triangles.size(); ++tri) {
+            const TriangleIndices& v = geometry.triangles[tri];
+            const glm::vec3& a = geometry.world_position[v.v[0]];
+            face_normal_[tri] = glm::cross(geometry.world_position[v.v[1]] - a, geometry.world_position[v.v[2]] - a);
+        }
+    }
+    const size_t stride = static_cast<size_t>(terms_stride_);
     if (mode_ == ShadingMode::gouraud) {
-        auto light_vertex = [&](uint32_t vertex, const Material& material) {
-            const glm::vec3& p = geometry.world_position[vertex];
-            return lighting_(p, geometry.world_normal[vertex], unit_or_zero(scene.camera.eye - p), material,
-                             scene.lights, scene.settings.ambient_light, SpecularModel::blinn);
+        auto light_vertex = [&](uint32_t vertex, const Material& material, LightingTerms* out) {
+            lit_terms(geometry.world_position[vertex], geometry.world_normal[vertex], material, out);
         };
         if (!triangle_material_.empty()) {
             // A vertex between two materials is lit once for each: the terms are kept per triangle corner.
-            vertex_terms_.resize(3 * geometry.triangles.size());
+            vertex_terms_.resize(3 * geometry.triangles.size() * stride);
             for (uint32_t tri = 0; tri < geometry.triangles.size(); ++tri)
                 for (int k = 0; k < 3; ++k)
-                    vertex_terms_[3 * tri + k] = light_vertex(geometry.triangles[tri].v[k], *triangle_material_[tri]);
+                    light_vertex(geometry.triangles[tri].v[k], *triangle_material_[tri],
+                                 &vertex_terms_[(3 * tri + k) * stride]);
         } else {
-            vertex_terms_.resize(geometry.clip.size());
+            vertex_terms_.resize(geometry.clip.size() * stride);
             for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
                 const uint32_t first = geometry.mesh_first_vertex[mesh];
                 const size_t count = scene.meshes[mesh].data.positions.size();
                 for (size_t i = first; i < first + count; ++i)
-                    vertex_terms_[i] = light_vertex(static_cast<uint32_t>(i), scene.meshes[mesh].material);
+                    light_vertex(static_cast<uint32_t>(i), scene.meshes[mesh].material, &vertex_terms_[i * stride]);
             }
         }
     } else if (mode_ == ShadingMode::flat) {
         const glm::vec3 centroid_bary(1.0f / 3.0f);
-        face_color_.resize(geometry.triangles.size());
-        if (textured) face_terms_.resize(geometry.triangles.size());
+        const bool per_face_terms = textured || shadows_;
+        if (!per_face_terms) face_color_.resize(geometry.triangles.size());
+        else face_terms_.resize(geometry.triangles.size() * stride);
+        std::vector<LightingTerms> terms(stride);
         for (uint32_t tri = 0; tri < geometry.triangles.size(); ++tri) {
             const TriangleIndices& v = geometry.triangles[tri];
             const glm::vec3& a = geometry.world_position[v.v[0]];
@@ -131,13 +87,40 @@ Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFun
             const glm::vec3& c = geometry.world_position[v.v[2]];
             const glm::vec3 centroid = (a + b + c) / 3.0f;
             const glm::vec3 normal = unit_or_zero(glm::cross(b - a, c - a));
-            const LightingTerms terms =
-                lighting_(centroid, normal, unit_or_zero(scene.camera.eye - centroid), material(tri), scene.lights,
-                          scene.settings.ambient_light, SpecularModel::blinn);
-            face_color_[tri] = base_color(tri, centroid_bary) * terms.diffuse + terms.specular;
-            if (textured) face_terms_[tri] = {base_color(tri, centroid_bary) * terms.diffuse, terms.specular};
+            lit_terms(centroid, normal, material(tri), terms.data());
+            const glm::vec3 base = base_color(tri, centroid_bary);
+            if (!per_face_terms) face_color_[tri] = base * terms[0].diffuse + terms[0].specular;
+            else
+                for (size_t k = 0; k < stride; ++k)
+                    face_terms_[tri * stride + k] = {base * terms[k].diffuse, terms[k].specular};
         }
     }
+}
+
+void Shader::lit_terms(const glm::vec3& position, const glm::vec3& normal, const Material& material,
+                       LightingTerms* out) const {
+    const glm::vec3 to_eye = unit_or_zero(scene_.camera.eye - position);
+    if (terms_stride_ == 1) {
+        out[0] = lighting_(position, normal, to_eye, material, scene_.lights, scene_.settings.ambient_light,
+                           SpecularModel::blinn, nullptr);
+        return;
+    }
+    out[0] = lighting_(position, normal, to_eye, material, unshadowed_lights_, scene_.settings.ambient_light,
+                       SpecularModel::blinn, nullptr);
+    for (size_t k = 0; k < shadowed_lights_.size(); ++k)
+        out[1 + k] = lighting_(position, normal, to_eye, material, {scene_.lights[shadowed_lights_[k]]},
+                               glm::vec3(0.0f), SpecularModel::blinn, nullptr);
+}
+
+LightingTerms Shader::combined(const LightingTerms* terms, const float* visibility) const {
+    LightingTerms out = terms[0];
+    if (!visibility) return out;
+    for (size_t k = 0; k < shadowed_lights_.size(); ++k) {
+        const float visible = visibility[shadowed_lights_[k]];
+        out.diffuse += terms[1 + k].diffuse * visible;
+        out.specular += terms[1 + k].specular * visible;
+    }
+    return out;
 }
 
 const Material& Shader::material(uint32_t triangle) const {
@@ -145,9 +128,22 @@ const Material& Shader::material(uint32_t triangle) const {
     return scene_.meshes[geometry_.triangle_mesh[triangle]].material;
 }
 
-const LightingTerms& Shader::corner_terms(uint32_t triangle, int corner) const {
-    if (!triangle_material_.empty()) return vertex_terms_[3 * triangle + corner];
-    return vertex_terms_[geometry_.triangles[triangle].v[corner]];
+const LightingTerms* Shader::corner_terms(uint32_t triangle, int corner) const {
+    const size_t stride = static_cast<size_t>(terms_stride_);
+    if (!triangle_material_.empty()) return &vertex_terms_[(3 * triangle + corner) * stride];
+    return &vertex_terms_[geometry_.triangles[triangle].v[corner] * stride];
+}
+
+const float* Shader::visibility_at(uint32_t triangle, const glm::vec3& bary) const {
+    if (!shadows_) return nullptr;
+    thread_local std::vector<float> visibility;
+    visibility.assign(scene_.lights.size(), 1.0f);
+    const TriangleIndices& v = geometry_.triangles[triangle];
+    glm::vec3 position(0.0f);
+    for (int i = 0; i < 3; ++i) position += bary[i] * geometry_.world_position[v.v[i]];
+    for (size_t light : shadowed_lights_)
+        visibility[light] = shadows_->visibility(light, position, face_normal_[triangle]);
+    return visibility.data();
 }
 
 glm::vec3 Shader::base_color(uint32_t triangle, const glm::vec3& bary) const {
@@ -172,7 +168,7 @@ bool Shader::texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3&
     return true;
 }
 
-LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary) const {
+LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary, const float* visibility) const {
     const TriangleIndices& v = geometry_.triangles[triangle];
     glm::vec3 position(0.0f), normal(0.0f);
     for (int i = 0; i < 3; ++i) {
@@ -184,25 +180,28 @@ LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary) const {
     switch (mode_) {
         case ShadingMode::cel:
             return evaluate_cel_lighting(position, unit_normal, to_eye, material(triangle), scene_.lights,
-                                         settings.ambient_light, settings.cel_bands);
+                                         settings.ambient_light, settings.cel_bands, visibility);
         case ShadingMode::gooch:
             return evaluate_gooch_lighting(position, unit_normal, to_eye, material(triangle), scene_.lights,
-                                           settings.gooch);
+                                           settings.gooch, visibility);
         default:
             return lighting_(position, unit_normal, to_eye, material(triangle), scene_.lights, settings.ambient_light,
-                             mode_ == ShadingMode::phong ? SpecularModel::phong : SpecularModel::blinn);
+                             mode_ == ShadingMode::phong ? SpecularModel::phong : SpecularModel::blinn, visibility);
     }
 }
 
 glm::vec3 Shader::shade(uint32_t triangle, const glm::vec3& bary) const {
     glm::vec3 texel(1.0f);
     const bool textured = texture_factor(triangle, bary, texel);
+    const float* visibility = visibility_at(triangle, bary);
     switch (mode_) {
         case ShadingMode::unlit:
             return textured ? base_color(triangle, bary) * texel : base_color(triangle, bary);
-        case ShadingMode::flat:
-            if (textured) return texel * face_terms_[triangle].diffuse + face_terms_[triangle].specular;
-            return face_color_[triangle];
+        case ShadingMode::flat: {
+            if (face_terms_.empty()) return face_color_[triangle];
+            const LightingTerms terms = combined(&face_terms_[triangle * static_cast<size_t>(terms_stride_)], visibility);
+            return (textured ? texel * terms.diffuse : terms.diffuse) + terms.specular;
+        }
         case ShadingMode::gouraud: {
             // Each corner's colour is lit at the vertex, then the colours are interpolated. A face colour is
             // constant over the triangle, so base * interpolated terms is the same thing. A texture multiplies the
@@ -211,7 +210,7 @@ glm::vec3 Shader::shade(uint32_t triangle, const glm::vec3& bary) const {
             for (int i = 0; i < 3; ++i) {
                 glm::vec3 corner_bary(0.0f);
                 corner_bary[i] = 1.0f;
-                const LightingTerms& terms = corner_terms(triangle, i);
+                const LightingTerms terms = combined(corner_terms(triangle, i), visibility);
                 if (textured) {
                     lit += bary[i] * (base_color(triangle, corner_bary) * terms.diffuse);
                     highlight += bary[i] * terms.specular;
@@ -225,7 +224,7 @@ glm::vec3 Shader::shade(uint32_t triangle, const glm::vec3& bary) const {
         case ShadingMode::blinn_phong:
         case ShadingMode::cel:
         case ShadingMode::gooch: {
-            const LightingTerms terms = light_at(triangle, bary);
+            const LightingTerms terms = light_at(triangle, bary, visibility);
             const glm::vec3 base = textured ? base_color(triangle, bary) * texel : base_color(triangle, bary);
             return base * terms.diffuse + terms.specular;
         }

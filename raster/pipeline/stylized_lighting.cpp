@@ -15,15 +15,16 @@ float cel_band(float n_dot_l, int bands) {
 
 LightingTerms evaluate_cel_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
                                     const Material& material, const std::vector<Light>& lights,
-                                    const glm::vec3& ambient_light, int bands) {
+                                    const glm::vec3& ambient_light, int bands, const float* visibility) {
     LightingTerms terms;
     terms.diffuse = material.ambient * ambient_light;
-    for (const Light& light : lights) {
+    for (size_t index = 0; index < lights.size(); ++index) {
+        const float visible = visibility ? visibility[index] : 1.0f;
         LightArrival arrival;
-        if (!light_arrives(light, position, normal, arrival)) continue;
-        terms.diffuse += arrival.radiance * material.diffuse * cel_band(arrival.n_dot_l, bands);
+        if (visible == 0.0f || !light_arrives(lights[index], position, normal, arrival)) continue;
+        terms.diffuse += arrival.radiance * material.diffuse * cel_band(arrival.n_dot_l * visible, bands);
         const float lobe = blinn_lobe(normal, arrival.to_light, to_eye);
-        if (lobe > 0.0f && specular_power(lobe, material.exponent) >= 0.5f)
+        if (lobe > 0.0f && specular_power(lobe, material.exponent) * visible >= 0.5f)
             terms.specular += arrival.radiance * material.specular;
     }
     return terms;
@@ -31,18 +32,19 @@ LightingTerms evaluate_cel_lighting(const glm::vec3& position, const glm::vec3& 
 
 LightingTerms evaluate_gooch_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
                                       const Material& material, const std::vector<Light>& lights,
-                                      const GoochTones& tones) {
+                                      const GoochTones& tones, const float* visibility) {
     float t = 0.5f;
     LightingTerms terms;
     if (!lights.empty()) {
         const Light& key = lights.front();
+        const float visible = visibility ? visibility[0] : 1.0f;
         const glm::vec3 offset = key.position - position;
         const float distance = glm::length(offset);
-        if (distance > 0.0f) t = 0.5f * (1.0f + glm::dot(normal, offset / distance));
+        if (distance > 0.0f) t = 0.5f * (1.0f + glm::dot(normal, offset / distance)) * visible;
         LightArrival arrival;
         if (light_arrives(key, position, normal, arrival)) {
             const float lobe = blinn_lobe(normal, arrival.to_light, to_eye);
-            terms.specular = arrival.radiance * material.specular * highlight_of(lobe, material.exponent);
+            terms.specular = arrival.radiance * material.specular * highlight_of(lobe, material.exponent) * visible;
         }
     }
     terms.diffuse = material.diffuse * (tones.alpha + t * (tones.beta - tones.alpha));

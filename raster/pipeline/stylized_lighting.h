@@ -6,7 +6,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "raster/pipeline/shade.h"
+#include "raster/pipeline/lighting.h"
 #include "raster/scene/scene.h"
 
 namespace raster {
@@ -16,17 +16,20 @@ namespace raster {
 float cel_band(float n_dot_l, int bands);
 
 // Cel: ambient, plus per light its diffuse at the banded n.l, plus a hard-edged highlight: the light's specular in
-// full where Blinn's (n.h)^exponent >= 1/2, none elsewhere. No outlines.
+// full where Blinn's (n.h)^exponent >= 1/2, none elsewhere. No outlines. A light's visibility v (visibility[i] for
+// lights[i]; null: 1) scales what is banded and thresholded: the band of v n.l, the highlight where v (n.h)^e >= 1/2.
 LightingTerms evaluate_cel_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
                                     const Material& material, const std::vector<Light>& lights,
-                                    const glm::vec3& ambient_light, int bands);
+                                    const glm::vec3& ambient_light, int bands, const float* visibility);
 
 // Gooch: with t = (1 + n.l) / 2 toward the scene's first light (t = 1/2 with no light, n.l not clamped),
 //   colour = t k_warm + (1 - t) k_cool + the first light's Blinn highlight
 // (GoochTones in scene.h), which is base * diffuse (alpha + t (beta - alpha)) + t (y, y, 0) + (1 - t) (0, 0, b)
 // + specular. No ambient term: the tones take its place. Light colour and intensity scale only the highlight.
+// The first light's visibility v (visibility[0]; null: 1) scales t and the highlight: a point in its shadow takes
+// the cool tone.
 LightingTerms evaluate_gooch_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
                                       const Material& material, const std::vector<Light>& lights,
-                                      const GoochTones& tones);
+                                      const GoochTones& tones, const float* visibility);
 
 }  // namespace raster

@@ -299,9 +299,10 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
     const TileBins bins = bin_setups(setups, frame, result.workspace.tile_bins);
     stats.ms_setup += milliseconds_since(stage_start);  // binning is the tiled renderer's part of setup
 
+    const ShadowMaps shadows = build_shadow_maps(scene, front, options, stages, stats);
     stage_start = Clock::now();
     const int samples = frame.samples();
-    const Shader shader(scene, front.geometry, stages.lighting);
+    const Shader shader(scene, front.geometry, stages.lighting, &shadows);
     const PixelResolver resolver(shader, resolve_params_for(scene, options), samples);
     Image& image = result.image;
     size_image(image, settings.width, settings.height, resolver.channels());
@@ -355,6 +356,37 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
         },
         [](int, int) {});
     return hidden;
+}
+
+void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
+                           float* view_depth) {
+    std::vector<std::vector<uint32_t>> lists;
+    const TileBins bins = bin_setups(setups, frame, lists);
+    const int samples = frame.samples(), F = frame.fixed_bits;
+    const TileJob job{setups, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
+    constexpr float kEmpty = std::numeric_limits<float>::infinity();
+    auto each_sample = [&](int tile_x, int tile_y, auto&& depth_of) {
+        const int x1 = std::min(frame.width, tile_x + kTileSize), y1 = std::min(frame.height, tile_y + kTileSize);
+        for (int py = tile_y; py < y1; ++py)
+            for (int px = tile_x; px < x1; ++px)
+                for (int s = 0; s < samples; ++s)
+                    view_depth[sample_index(px, py, s, frame.width, samples)] = depth_of(px, py, s);
+    };
+    TileTimes times;
+    rasterize_each_tile(
+        job, bins, frame.threads, avx2_allowed(allow_simd), true, times,
+        [&](int tile_x, int tile_y, TileScratch& scratch) {
+            each_sample(tile_x, tile_y, [&](int px, int py, int s) {
+                const size_t at =
+                    (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * samples + s;
+                const uint32_t winner = scratch.winner[at];
+                if (winner == kNoTriangle) return kEmpty;
+                return interpolate_hit(setups[winner], (int64_t{px} << F) + job.offsets.x[s],
+                                       (int64_t{py} << F) + job.offsets.y[s])
+                    .view_depth;
+            });
+        },
+        [&](int tile_x, int tile_y) { each_sample(tile_x, tile_y, [&](int, int, int) { return kEmpty; }); });
 }
 
 }  // namespace raster

@@ -23,4 +23,9 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
 size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
                        VisibilityBuffer& visibility);
 
+// The same coverage and depth, keeping only each sample's view depth (+inf where no triangle covers it), in
+// visibility-buffer order: what a depth-only pass (a shadow map's face) needs, without the visibility buffer.
+void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
+                           float* view_depth);
+
 }  // namespace raster

@@ -57,6 +57,10 @@ bool has_textures(const Scene& scene) {
     return textured;
 }
 
+bool has_shadows(const Scene& scene) {
+    return std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& light) { return light.shadows; });
+}
+
 size_t triangle_count(const Scene& scene) {
     size_t total = 0;
     for (const auto& mesh : scene.meshes) total += mesh.data.triangles.size();

@@ -40,12 +40,14 @@ struct Camera {
     float far = 100.0f;
 };
 
-// Point light; colour is linear RGB. With `attenuate`, the light's contribution is divided by r^2.
+// Point light; colour is linear RGB. With `attenuate`, the light's contribution is divided by r^2. With `shadows`,
+// the light casts shadows through a cube shadow map (README "Shadows"); without, it lights every point it faces.
 struct Light {
     glm::vec3 position{0.0f};
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
     bool attenuate = false;
+    bool shadows = false;
 };
 
 // One mesh placed in the world: its data in object space, the model matrix and its material.
@@ -77,6 +79,21 @@ struct GoochTones {
     float beta = 0.6f;
 };
 
+// The shadow maps of the lights that cast shadows (README "Shadows"): a cube of six resolution x resolution faces
+// per light, holding the view depth of the nearest opaque surface at each texel centre. A point is lit by the
+// light where its depth along the face's axis, less the bias, is at most the map's depth:
+//   bias = bias * depth + slope_bias * (how far the receiver's plane comes towards the light across the filter's
+//          reach of pcf / 2 texels), the second term at most the depth itself;
+// pcf x pcf texels around the point's are tested and the fraction that pass is the light's visibility.
+struct ShadowSettings {
+    int resolution = 1024;    // texels per side of each face, kMinShadowResolution..kMaxShadowResolution
+    float bias = 1e-3f;       // constant bias, a fraction of the receiver's depth from the light, in [0, 1]
+    float slope_bias = 1.5f;  // scales the receiver plane's depth change across the filter, in [0, 64]
+    int pcf = 1;              // percentage-closer filtering: 1 (one texel), 3 (3 x 3) or 5 (5 x 5)
+};
+inline constexpr int kMinShadowResolution = 16;
+inline constexpr int kMaxShadowResolution = 8192;
+
 // How to render: everything a command-line flag can override.
 struct RenderSettings {
     int width = 640;
@@ -95,6 +112,7 @@ struct RenderSettings {
     // When set, every textured material's filter (--filter, the trade-off's filter modes); the mip chains it needs
     // must be built (build_needed_mip_chains) before rendering.
     std::optional<TextureFilter> texture_filter;
+    ShadowSettings shadows;  // read only when a light casts shadows
 };
 
 struct Scene {
@@ -107,6 +125,9 @@ struct Scene {
 
 // Whether any mesh has a textured material: the only scenes that read texture coordinates.
 bool has_textures(const Scene& scene);
+
+// Whether any light casts shadows: the only scenes that build shadow maps.
+bool has_shadows(const Scene& scene);
 
 const char* to_string(ShadingMode mode);
 const char* to_string(SamplePattern pattern);

@@ -20,6 +20,13 @@ uint64_t frame_bytes(const RenderSettings& settings) {
     return pixels * uint64_t(std::max(settings.samples, 0)) * 28u + pixels * 4u;
 }
 
+uint64_t shadow_map_bytes(const Scene& scene) {
+    const uint64_t side = uint64_t(std::max(scene.settings.shadows.resolution, 0));
+    uint64_t lights = 0;
+    for (const Light& light : scene.lights) lights += light.shadows;
+    return lights * 6u * side * side * sizeof(float);
+}
+
 namespace {
 
 bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -38,6 +45,18 @@ std::string settings_problem(const RenderSettings& s) {
     if (s.snap_bits < kMinSnapBits || s.snap_bits > kMaxSnapBits)
         return "snap bits must be " + std::to_string(kMinSnapBits) + ".." + std::to_string(kMaxSnapBits);
     if (!finite3(s.background) || !finite3(s.ambient_light)) return "background and ambient light must be finite";
+    return shadow_settings_problem(s.shadows);
+}
+
+std::string shadow_settings_problem(const ShadowSettings& s) {
+    if (s.resolution < kMinShadowResolution || s.resolution > kMaxShadowResolution)
+        return "shadow map resolution must be " + std::to_string(kMinShadowResolution) + ".." +
+               std::to_string(kMaxShadowResolution) + ", got " + std::to_string(s.resolution);
+    if (!(s.bias >= 0.0f && s.bias <= 1.0f)) return "shadow bias must be in [0, 1], got " + std::to_string(s.bias);
+    if (!(s.slope_bias >= 0.0f && s.slope_bias <= 64.0f))
+        return "shadow slope bias must be in [0, 64], got " + std::to_string(s.slope_bias);
+    if (s.pcf != 1 && s.pcf != 3 && s.pcf != 5)
+        return "shadow pcf must be 1, 3 or 5 (texels per side of the filter), got " + std::to_string(s.pcf);
     return "";
 }
 
@@ -90,6 +109,10 @@ void validate_scene(const Scene& scene) {
             fail(std::string("camera field of view ") + fov + " degrees is too narrow: its projection overflows float");
         }
     if (triangle_count(scene) >= kNoTriangle) fail("too many triangles");
+    if (frame_bytes(scene.settings) + shadow_map_bytes(scene) > kMaxFrameBytes)
+        fail("the frame buffers (" + std::to_string(frame_bytes(scene.settings) >> 20) + " MiB) and the shadow maps (" +
+             std::to_string(shadow_map_bytes(scene) >> 20) + " MiB) need more than the " +
+             std::to_string(kMaxFrameBytes >> 20) + " MiB cap (lower the shadow map resolution)");
 
     for (const Light& light : scene.lights)
         if (!finite3(light.position) || !finite3(light.color) || !std::isfinite(light.intensity))

@@ -14,8 +14,11 @@ namespace raster {
 // image); scenes above kMaxFrameBytes are refused.
 inline constexpr uint64_t kMaxFrameBytes = uint64_t{4} << 30;  // 4 GiB
 uint64_t frame_bytes(const RenderSettings& settings);
+// Bytes the shadow maps of `scene` need: 6 faces of resolution^2 floats per light that casts shadows (README
+// "Shadows"); with frame_bytes, at most kMaxFrameBytes.
+uint64_t shadow_map_bytes(const Scene& scene);
 
-// Checks image size and frame memory, samples and pattern, camera (near > 0, far > near and at most 2^126, fov in
+// Checks image size and frame memory (shadow maps included), samples and pattern, camera (near > 0, far > near and at most 2^126, fov in
 // (0, 180), eye != target, up not parallel to the view direction), snap bits, finite numbers, and triangle indices in
 // range.
 // Throws InputError naming scene.path.
@@ -24,6 +27,9 @@ void validate_scene(const Scene& scene);
 // The settings check validate_scene makes, for loaders that point at the offending node: empty when fine, else
 // what is wrong.
 std::string settings_problem(const RenderSettings& settings);
+
+// The shadow settings check (part of settings_problem): empty when fine, else what is wrong.
+std::string shadow_settings_problem(const ShadowSettings& settings);
 
 // The camera check: which value is wrong and what is wrong with it, so a loader can point at that value.
 enum class CameraField { eye, target, up, fov, near, far };

@@ -22,7 +22,7 @@ TEST(Lighting, lightStraightAboveGivesFullDiffuseAndSpecular) {
     // Normal up, light and eye straight above: n.l = 1, h = n so (n.h)^e = 1.
     const Light light{{0, 4, 0}, {1, 1, 1}, 2.0f, false};
     const LightingTerms t = evaluate_lighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, test_material(), {light}, glm::vec3(1),
-                                              SpecularModel::blinn);
+                                              SpecularModel::blinn, nullptr);
     EXPECT_NEAR(t.diffuse.x, 0.1f + 0.5f * 2.0f, 1e-6f);
     EXPECT_NEAR(t.specular.x, 0.25f * 2.0f, 1e-6f);
 }
@@ -30,7 +30,7 @@ TEST(Lighting, lightStraightAboveGivesFullDiffuseAndSpecular) {
 TEST(Lighting, attenuationDividesByTheSquaredDistance) {
     const Light light{{0, 4, 0}, {1, 1, 1}, 2.0f, true};
     const LightingTerms t = evaluate_lighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, test_material(), {light}, glm::vec3(0),
-                                              SpecularModel::blinn);
+                                              SpecularModel::blinn, nullptr);
     EXPECT_NEAR(t.diffuse.x, 0.5f * 2.0f / 16.0f, 1e-6f);
 }
 
@@ -40,8 +40,8 @@ TEST(Lighting, blinnAndPhongLobesDifferAsTheirFormulasSay) {
     const float c45 = std::cos(float(M_PI) / 4), c22 = std::cos(float(M_PI) / 8);
     const Light light{{1, 1, 0}, {1, 1, 1}, 1.0f, false};
     const Material m = test_material();
-    const LightingTerms blinn = evaluate_lighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, m, {light}, glm::vec3(0), SpecularModel::blinn);
-    const LightingTerms phong = evaluate_lighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, m, {light}, glm::vec3(0), SpecularModel::phong);
+    const LightingTerms blinn = evaluate_lighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, m, {light}, glm::vec3(0), SpecularModel::blinn, nullptr);
+    const LightingTerms phong = evaluate_lighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, m, {light}, glm::vec3(0), SpecularModel::phong, nullptr);
     EXPECT_NEAR(blinn.diffuse.x, 0.5f * c45, 1e-5f);
     EXPECT_NEAR(blinn.specular.x, 0.25f * c22 * c22, 1e-5f);
     EXPECT_NEAR(phong.specular.x, 0.25f * c45 * c45, 1e-5f);
@@ -64,7 +64,7 @@ TEST(Lighting, specularPowerIsWithinItsRoundingBoundOfPowForIntegerExponentsAndI
 TEST(Lighting, lightBehindTheSurfaceAddsNothing) {
     const Light light{{0, -3, 0}, {1, 1, 1}, 1.0f, false};
     const LightingTerms t = evaluate_lighting({0, 0, 0}, {0, 1, 0}, {0, 1, 0}, test_material(), {light}, glm::vec3(1),
-                                              SpecularModel::blinn);
+                                              SpecularModel::blinn, nullptr);
     EXPECT_NEAR(t.diffuse.x, 0.1f, 1e-6f);  // ambient only
     EXPECT_EQ(t.specular.x, 0.0f);
 }
@@ -109,7 +109,7 @@ TEST(Shader, gouraudAtAVertexEqualsLightingAtThatVertex) {
     // Vertex 0 at (-1,-1,0), normal +z, light at (0,0,3), eye at (0,0,5), base colour red.
     const glm::vec3 p(-1, -1, 0), n(0, 0, 1);
     const LightingTerms t = evaluate_lighting(p, n, glm::normalize(scene.camera.eye - p), scene.meshes[0].material,
-                                              scene.lights, glm::vec3(1), SpecularModel::blinn);
+                                              scene.lights, glm::vec3(1), SpecularModel::blinn, nullptr);
     const glm::vec3 expected = glm::vec3(1, 0, 0) * t.diffuse + t.specular;
     const glm::vec3 c = shader.shade(0, {1, 0, 0});
     EXPECT_NEAR(c.x, expected.x, 1e-5f);
@@ -123,7 +123,7 @@ TEST(Shader, phongUsesTheInterpolatedPointAndNormal) {
     const glm::vec3 bary(0.25f, 0.25f, 0.5f);
     const glm::vec3 p = 0.25f * glm::vec3(-1, -1, 0) + 0.25f * glm::vec3(1, -1, 0) + 0.5f * glm::vec3(0, 1, 0);
     const LightingTerms t = evaluate_lighting(p, {0, 0, 1}, glm::normalize(scene.camera.eye - p), scene.meshes[0].material,
-                                              scene.lights, glm::vec3(1), SpecularModel::blinn);
+                                              scene.lights, glm::vec3(1), SpecularModel::blinn, nullptr);
     const glm::vec3 base(0.25f, 0.25f, 0.5f);
     const glm::vec3 c = shader.shade(0, bary);
     EXPECT_NEAR(c.z, (base * t.diffuse + t.specular).z, 1e-5f);
