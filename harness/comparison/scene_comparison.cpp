@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <memory>
 
 #include "harness/comparison/decoded_image.h"
 #include "oracle/compare/diff_map.h"
@@ -10,6 +11,7 @@
 #include "oracle/reference/sample_positions.h"
 #include "oracle/reference/scene_geometry.h"
 #include "oracle/reference/shader.h"
+#include "oracle/reference/shadow_oracle.h"
 #include "raster/core/stopwatch.h"
 #include "raster/scene/validation.h"
 
@@ -57,7 +59,10 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
     oracle_options.mode = options.mode;
     oracle_options.threads = options.threads;
     oracle::render_oracle(scene, geometry, oracle_options, out.oracle_visibility);
-    const oracle::OracleShader shader(scene, geometry);
+    std::unique_ptr<oracle::ShadowOracle> shadows;
+    if (has_shadows(scene) && scene.settings.shading != ShadingMode::unlit)
+        shadows = std::make_unique<oracle::ShadowOracle>(scene, geometry, options.threads);
+    const oracle::OracleShader shader(scene, geometry, shadows.get(), oracle::ShadowAnswer::exact);
     const oracle::ResolveSettings resolve{scene.settings.samples, scene.settings.msaa, options.alpha,
                                           glm::dvec3(scene.settings.background)};
     const oracle::OracleImage oracle_image = oracle::render_image(shader, out.oracle_visibility, resolve, options.threads);
@@ -82,7 +87,11 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
     colour.oracle = &out.oracle_visibility;
     colour.classes = &out.visibility.classes;
     colour.reference = &reference;
-    colour.shader = &shader;
+    const oracle::OracleShader allowed(scene, geometry, shadows.get(), oracle::ShadowAnswer::allowed);
+    std::unique_ptr<oracle::OracleShader> open;
+    if (shadows) open = std::make_unique<oracle::OracleShader>(scene, geometry, shadows.get(), oracle::ShadowAnswer::open);
+    colour.shader = &allowed;
+    colour.open_shader = open.get();
     colour.resolve = resolve;
     colour.offsets = offsets;
     colour.threads = options.threads;
@@ -92,9 +101,22 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
     out.png = oracle::check_colours(bounds, pixels_of(png), oracle_image);
     out.ppm = oracle::check_colours(bounds, pixels_of(ppm), oracle_image);
     out.colour_genuine.resize(out.png.genuine_pixels.size());
+    out.shadow_genuine.resize(out.png.genuine_pixels.size());
     for (size_t i = 0; i < out.colour_genuine.size(); ++i) {
         out.colour_genuine[i] = out.png.genuine_pixels[i] | out.ppm.genuine_pixels[i];
         out.colour_genuine_pixels += out.colour_genuine[i];
+        // A shadow disagreement when every file that is off is off only by its shadows.
+        const bool png_other = out.png.genuine_pixels[i] && !out.png.shadow_pixels[i];
+        const bool ppm_other = out.ppm.genuine_pixels[i] && !out.ppm.shadow_pixels[i];
+        out.shadow_genuine[i] = out.colour_genuine[i] && !png_other && !ppm_other;
+        out.shadow_genuine_pixels += out.shadow_genuine[i];
+    }
+    using oracle::ShadowVerdict;
+    out.shadow_seen = bounds.shadow_seen;
+    for (uint8_t seen : bounds.shadow_seen) {
+        out.shadow_edge_pixels += (seen >> static_cast<int>(ShadowVerdict::open_edge)) & 1u;
+        out.shadow_depth_pixels += (seen >> static_cast<int>(ShadowVerdict::open_depth)) & 1u;
+        out.shadow_inconsistent_pixels += (seen >> static_cast<int>(ShadowVerdict::inconsistent)) & 1u;
     }
     out.compare_ms = milliseconds_since(start);
     return out;
@@ -150,8 +172,13 @@ nlohmann::json comparison_json(const Comparison& c) {
              {{"visibility", count(SampleClass::visibility)},
               {"barycentrics", count(SampleClass::barycentrics)},
               {"depth", count(SampleClass::depth)},
-              {"color", c.colour_genuine_pixels}}},
+              {"color", c.colour_genuine_pixels - c.shadow_genuine_pixels},
+              {"shadow", c.shadow_genuine_pixels}}},
             {"genuine_total", c.genuine_total()},
+            {"shadows",
+             {{"edge", c.shadow_edge_pixels},
+              {"depth", c.shadow_depth_pixels},
+              {"inconsistent", c.shadow_inconsistent_pixels}}},
             {"pixels",
              {{"judged", c.png.judged},
               {"ambiguous", c.png.ambiguous},
@@ -175,7 +202,8 @@ std::string comparison_summary(const Comparison& c) {
                   "  samples agree      %llu\n"
                   "  samples ambiguous  %llu = %.4f%% (edge band %llu, depth tie %llu, clip boundary %llu, facing %llu)\n"
                   "  samples genuine    %llu (visibility %llu, barycentrics %llu, depth %llu)\n"
-                  "  pixels judged      %llu, ambiguous %llu, colour genuine %llu (png %llu, ppm %llu)\n"
+                  "  pixels judged      %llu, ambiguous %llu, colour genuine %llu (png %llu, ppm %llu), of them shadow %llu\n"
+                  "  shadow model open  %llu pixels by an edge, %llu by depth, %llu inconsistent\n"
                   "  genuine total      %llu\n"
                   "  max colour difference from the oracle's image %d/255 on judged pixels\n"
                   "  raster %.1f ms, oracle %.1f ms, compare %.1f ms\n",
@@ -186,7 +214,11 @@ std::string comparison_summary(const Comparison& c) {
                   count(SampleClass::visibility), count(SampleClass::barycentrics), count(SampleClass::depth),
                   static_cast<unsigned long long>(c.png.judged), static_cast<unsigned long long>(c.png.ambiguous),
                   static_cast<unsigned long long>(c.colour_genuine_pixels), static_cast<unsigned long long>(c.png.genuine),
-                  static_cast<unsigned long long>(c.ppm.genuine), static_cast<unsigned long long>(c.genuine_total()),
+                  static_cast<unsigned long long>(c.ppm.genuine), static_cast<unsigned long long>(c.shadow_genuine_pixels),
+                  static_cast<unsigned long long>(c.shadow_edge_pixels),
+                  static_cast<unsigned long long>(c.shadow_depth_pixels),
+                  static_cast<unsigned long long>(c.shadow_inconsistent_pixels),
+                  static_cast<unsigned long long>(c.genuine_total()),
                   std::max(c.png.max_difference, c.ppm.max_difference), c.raster_ms, c.oracle_ms, c.compare_ms);
     return text;
 }
@@ -198,7 +230,8 @@ std::string genuine_reasons(const Comparison& c) {
     };
     for (oracle::SampleClass k : {oracle::SampleClass::visibility, oracle::SampleClass::barycentrics, oracle::SampleClass::depth})
         add(oracle::to_string(k), c.visibility.counts.count(k));
-    add("color", c.colour_genuine_pixels);
+    add("color", c.colour_genuine_pixels - c.shadow_genuine_pixels);
+    add("shadow", c.shadow_genuine_pixels);
     return text.empty() ? "-" : text;
 }
 
@@ -242,7 +275,8 @@ std::string genuine_details(const Comparison& c, int shown) {
 }
 
 Image diff_map(const Comparison& c) {
-    return oracle::diff_map(c.visibility.classes, c.samples, c.colour_genuine, pixels_of(c.raster.image));
+    return oracle::diff_map(c.visibility.classes, c.samples, c.colour_genuine, pixels_of(c.raster.image),
+                            {&c.shadow_genuine, &c.shadow_seen});
 }
 
 }  // namespace raster::harness

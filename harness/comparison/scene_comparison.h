@@ -36,6 +36,14 @@ struct Comparison {
     oracle::ColourCheck png, ppm;             // per pixel, raster's image decoded from each file format
     std::vector<uint8_t> colour_genuine;      // per pixel: outside its bounds in either file
     uint64_t colour_genuine_pixels = 0;       // how many
+    // With lights that cast shadows: of those, how many are explained by a shadow test (inside the bounds once the
+    // shadows are left open: acne, light leaking, a wrong map); and how many judged pixels the shadow model left
+    // open by an occluder's edge in the footprint, by a surface within the bias, or by the oracle's ray and exact
+    // footprint disagreeing (never expected).
+    std::vector<uint8_t> shadow_genuine;      // per pixel
+    std::vector<uint8_t> shadow_seen;         // per judged pixel: the shadow verdicts met (ShadowTally bits)
+    uint64_t shadow_genuine_pixels = 0;
+    uint64_t shadow_edge_pixels = 0, shadow_depth_pixels = 0, shadow_inconsistent_pixels = 0;
     double raster_ms = 0;   // raster's in-process frame time (RenderStats::ms_total)
     double oracle_ms = 0;   // the oracle: geometry, BVH build, one ray per sample, shading and resolve
     double compare_ms = 0;  // reference geometry, classification, colour bounds and checks
@@ -57,7 +65,8 @@ std::string comparison_problem(const RenderSettings& settings);
 Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, const PipelineStages& stages = {});
 
 // {scene, width, height, samples, oracle_mode, agree, ambiguous: {edge_band, depth_tie, clip_boundary, facing},
-//  ambiguous_total, ambiguous_fraction: {...}, genuine: {visibility, barycentrics, depth, color}, genuine_total,
+//  ambiguous_total, ambiguous_fraction: {...}, genuine: {visibility, barycentrics, depth, color, shadow},
+//  genuine_total, shadows: {edge, depth, inconsistent} (pixels, with lights that cast shadows),
 //  pixels: {judged, ambiguous, color_png, color_ppm}, max_color_error, color_disagreements: [...],
 //  raster_ms, oracle_ms, compare_ms}
 nlohmann::json comparison_json(const Comparison& comparison);

@@ -19,6 +19,10 @@ PixelBounds pixel_bounds(const ColourInputs& in) {
     const size_t pixels = static_cast<size_t>(out.width) * out.height;
     out.state.assign(pixels, PixelState::judged);
     out.ranges.assign(pixels * out.channels, ByteRange{});
+    if (in.open_shader) {
+        out.shadow_seen.assign(pixels, 0);
+        out.open_ranges.assign(pixels * out.channels, ByteRange{0, 255});
+    }
     parallel_for(static_cast<size_t>(out.height), in.threads, [&](size_t row) {
         const int py = static_cast<int>(row);
         std::vector<ResolveSample> box(static_cast<size_t>(samples));
@@ -39,8 +43,13 @@ PixelBounds pixel_bounds(const ColourInputs& in) {
             }
             out.state[pixel] = genuine ? PixelState::genuine : ambiguous ? PixelState::ambiguous : PixelState::judged;
             if (out.state[pixel] != PixelState::judged) continue;
-            const PixelColour allowed = resolve_pixel(*in.shader, in.resolve, box.data());
+            ShadowTally tally;
+            const PixelColour allowed = resolve_pixel(*in.shader, in.resolve, box.data(), &tally);
             for (int c = 0; c < out.channels; ++c) out.ranges[pixel * out.channels + c] = byte_range(allowed.channel[c]);
+            if (!in.open_shader || tally.seen == 0) continue;  // no light with shadows reaches the pixel
+            out.shadow_seen[pixel] = tally.seen;
+            const PixelColour open = resolve_pixel(*in.open_shader, in.resolve, box.data());
+            for (int c = 0; c < out.channels; ++c) out.open_ranges[pixel * out.channels + c] = byte_range(open.channel[c]);
         }
     });
     return out;
@@ -53,6 +62,7 @@ ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, 
     const int channels = std::min(bounds.channels, image.channels);
     ColourCheck out;
     out.genuine_pixels.assign(static_cast<size_t>(bounds.width) * bounds.height, 0);
+    out.shadow_pixels.assign(out.genuine_pixels.size(), 0);
     for (int y = 0; y < bounds.height; ++y)
         for (int x = 0; x < bounds.width; ++x) {
             const size_t pixel = static_cast<size_t>(y) * bounds.width + x;
@@ -69,6 +79,13 @@ ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, 
             if (inside) continue;
             ++out.genuine;
             out.genuine_pixels[pixel] = 1;
+            if (!bounds.open_ranges.empty()) {
+                bool shadow_explains = true;
+                for (int c = 0; c < channels; ++c)
+                    shadow_explains = shadow_explains && bounds.open_ranges[pixel * bounds.channels + c].contains(shown[c]);
+                out.shadow_pixels[pixel] = shadow_explains;
+                out.genuine_shadow += shadow_explains;
+            }
             if (out.first.size() >= kListedColourDisagreements) continue;
             ColourDisagreement d;
             d.x = x;

@@ -26,13 +26,19 @@ struct PixelBounds {
     int width = 0, height = 0, channels = 3;
     std::vector<PixelState> state;  // per pixel
     std::vector<ByteRange> ranges;  // per pixel and channel, for judged pixels
+    // With shadows (an open_shader given): per pixel the shadow verdicts its shading met (ShadowTally), and, where a
+    // light with shadows reaches it, the bytes allowed whatever the shadow maps said (ShadowAnswer::open), so that a
+    // pixel outside `ranges` but inside these is told apart as a shadow disagreement. Empty without shadows.
+    std::vector<uint8_t> shadow_seen;
+    std::vector<ByteRange> open_ranges;  // per pixel and channel; {0, 255} where no light with shadows reaches
 };
 
 struct ColourInputs {
     const SampleBuffer* oracle = nullptr;
     const std::vector<SampleClass>* classes = nullptr;  // compare_visibility's
     const ReferenceGeometry* reference = nullptr;
-    const OracleShader* shader = nullptr;
+    const OracleShader* shader = nullptr;       // ShadowAnswer::allowed
+    const OracleShader* open_shader = nullptr;  // ShadowAnswer::open, when a light casts shadows; else null
     ResolveSettings resolve;
     std::vector<glm::dvec2> offsets;  // the sample positions inside a pixel
     int threads = 0;
@@ -51,6 +57,8 @@ inline constexpr size_t kListedColourDisagreements = 200;
 
 struct ColourCheck {
     uint64_t judged = 0, ambiguous = 0, genuine = 0;  // pixels
+    uint64_t genuine_shadow = 0;                // of the genuine ones: inside the bounds once shadows are left open
+    std::vector<uint8_t> shadow_pixels;         // per pixel: 1 where genuine and explained by a shadow test
     int max_difference = 0;                     // largest |raster - oracle| byte difference over judged pixels
     std::vector<uint8_t> genuine_pixels;        // per pixel: 1 where the colour is outside its range
     std::vector<ColourDisagreement> first;      // the first kListedColourDisagreements, row by row

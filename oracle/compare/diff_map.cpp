@@ -1,12 +1,20 @@
 // The disagreement map: per pixel, the worst class among its samples, then its colour's.
 #include "oracle/compare/diff_map.h"
 
+#include "oracle/reference/shadow_oracle.h"
+
 #include <algorithm>
 
 namespace raster::oracle {
 
 Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
-               const RasterPixels& raster_image) {
+               const RasterPixels& raster_image, const ShadowLayers& shadows) {
+    auto flag = [](const std::vector<uint8_t>* layer, size_t pixel) {
+        return layer && !layer->empty() ? (*layer)[pixel] : uint8_t{0};
+    };
+    uint8_t open_verdicts = 0;
+    for (int v = 0; v < kShadowVerdictCount; ++v)
+        if (is_open(static_cast<ShadowVerdict>(v))) open_verdicts |= static_cast<uint8_t>(1u << v);
     Image map(raster_image.width, raster_image.height, 3);
     for (int y = 0; y < map.height; ++y) {
         for (int x = 0; x < map.width; ++x) {
@@ -19,8 +27,15 @@ Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::
             }
             uint8_t* out = map.at(x, y);
             if (genuine || colour_genuine[pixel] || ambiguous) {
-                std::copy_n(genuine ? kGenuineColor : colour_genuine[pixel] ? kColourDisagreementColor : kAmbiguousColor, 3,
-                            out);
+                std::copy_n(genuine                            ? kGenuineColor
+                            : flag(shadows.genuine, pixel)     ? kShadowDisagreementColor
+                            : colour_genuine[pixel]            ? kColourDisagreementColor
+                                                               : kAmbiguousColor,
+                            3, out);
+                continue;
+            }
+            if (flag(shadows.seen, pixel) & open_verdicts) {
+                std::copy_n(kShadowOpenColor, 3, out);
                 continue;
             }
             const uint8_t* in = raster_image.at(x, y);

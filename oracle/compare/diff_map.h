@@ -1,5 +1,6 @@
 // The disagreement map: one pixel per pixel, red where a sample disagrees genuinely, magenta where every sample
-// agrees but the colour is outside its range, yellow where a sample is only ambiguous, and the raster image in
+// agrees but the colour is outside its range, orange where that is explained by a shadow test, yellow where a
+// sample is only ambiguous, blue where the shadow model left a light's visibility open, and the raster image in
 // dimmed grey where everything agrees.
 #pragma once
 
@@ -15,11 +16,20 @@ namespace raster::oracle {
 inline constexpr uint8_t kGenuineColor[3] = {230, 20, 20};
 inline constexpr uint8_t kColourDisagreementColor[3] = {220, 40, 220};
 inline constexpr uint8_t kAmbiguousColor[3] = {250, 210, 0};
+inline constexpr uint8_t kShadowDisagreementColor[3] = {255, 140, 0};
+inline constexpr uint8_t kShadowOpenColor[3] = {70, 150, 255};
+
+// The shadow layers of the map, per pixel, each optional (null or empty: none): genuine colour disagreements a
+// shadow test explains, and the shadow verdicts met (ShadowTally bits; an open verdict paints the pixel).
+struct ShadowLayers {
+    const std::vector<uint8_t>* genuine = nullptr;
+    const std::vector<uint8_t>* seen = nullptr;
+};
 
 // `classes` holds width * height * samples entries in visibility-buffer order, `colour_genuine` one flag per pixel
 // (check_colours' genuine_pixels); `raster_image` is width x height. An agreeing pixel is grey at 20 + 35% of the
 // raster image's luma, so the scene stays recognisable underneath.
 Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
-               const RasterPixels& raster_image);
+               const RasterPixels& raster_image, const ShadowLayers& shadows = {});
 
 }  // namespace raster::oracle

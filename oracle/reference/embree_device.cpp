@@ -1,6 +1,7 @@
 // The Embree device wrapper: creation, the error callback and the check that turns recorded errors into throws.
 #include "oracle/reference/embree_device.h"
 
+#include <map>
 #include <mutex>
 
 namespace raster::oracle {
@@ -60,6 +61,13 @@ void EmbreeDevice::check(const std::string& what) const {
     log_->code = RTC_ERROR_NONE;
     log_->message.clear();
     throw OracleError(message);
+}
+
+EmbreeDevice& embree_device_for(int threads) {
+    thread_local std::map<int, std::unique_ptr<EmbreeDevice>> devices;
+    std::unique_ptr<EmbreeDevice>& device = devices[threads];
+    if (!device) device = std::make_unique<EmbreeDevice>("threads=" + std::to_string(threads));
+    return *device;
 }
 
 }  // namespace raster::oracle

@@ -42,4 +42,10 @@ private:
     std::unique_ptr<ErrorLog> log_;
 };
 
+// The Embree device for a thread count, made once per calling thread and kept: creating one starts its task
+// scheduler, which cost half of a small scene's comparison (the differential fuzz target compares thousands a
+// second), and a device holds no scene of its own. Per thread, so that a device's error log only ever sees its own
+// thread's calls.
+EmbreeDevice& embree_device_for(int threads);
+
 }  // namespace raster::oracle

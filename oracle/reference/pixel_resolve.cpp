@@ -8,7 +8,8 @@
 
 namespace raster::oracle {
 
-PixelColour resolve_pixel(const OracleShader& shader, const ResolveSettings& settings, const ResolveSample* samples) {
+PixelColour resolve_pixel(const OracleShader& shader, const ResolveSettings& settings, const ResolveSample* samples,
+                          ShadowTally* tally) {
     const int count = settings.samples;
     Interval3 sum(glm::dvec3(0.0));
     glm::dvec3 magnitude(0.0);  // of the summed terms, for the sum's rounding
@@ -25,7 +26,7 @@ PixelColour resolve_pixel(const OracleShader& shader, const ResolveSettings& set
             weight = 0;
             for (int later = s; later < count; ++later) weight += samples[later].triangle == id;
         }
-        const Interval3 colour = shader.shade(id, samples[s].bary);
+        const Interval3 colour = shader.shade(id, samples[s].bary, tally);
         sum = sum + Interval(static_cast<double>(weight)) * colour;
         for (int c = 0; c < 3; ++c) magnitude[c] += weight * colour[c].magnitude();
     }

@@ -35,7 +35,9 @@ struct PixelColour {
     int channels = 3;
 };
 
-// The pixel's linear colour for its `settings.samples` samples, in pattern order.
-PixelColour resolve_pixel(const OracleShader& shader, const ResolveSettings& settings, const ResolveSample* samples);
+// The pixel's linear colour for its `settings.samples` samples, in pattern order; `tally` (optional) gets the
+// shadow verdicts its shading met.
+PixelColour resolve_pixel(const OracleShader& shader, const ResolveSettings& settings, const ResolveSample* samples,
+                          ShadowTally* tally = nullptr);
 
 }  // namespace raster::oracle

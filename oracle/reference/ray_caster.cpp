@@ -23,17 +23,6 @@ constexpr size_t kPacketSize = 8;  // RTCRayHit8
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// The Embree device for a thread count, made once per calling thread and kept: creating one starts its task
-// scheduler, which cost half of a small scene's comparison (the differential fuzz target compares thousands a
-// second), and a device holds no scene of its own. Per thread, so that a device's error log only ever sees its own
-// thread's calls.
-EmbreeDevice& device_for(int threads) {
-    thread_local std::map<int, std::unique_ptr<EmbreeDevice>> devices;
-    std::unique_ptr<EmbreeDevice>& device = devices[threads];
-    if (!device) device = std::make_unique<EmbreeDevice>("threads=" + std::to_string(threads));
-    return *device;
-}
-
 // Front-facing seen from the eye at the view-space origin: counter-clockwise in NDC is a normal pointing back at
 // the eye, i.e. dot(normal, vertex) < 0 (perspective keeps the orientation of what lies in front of the eye).
 bool faces_eye(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
@@ -59,7 +48,7 @@ OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const
     const int threads = options.threads > 0 ? options.threads : default_thread_count();
 
     auto start = Clock::now();
-    EmbreeDevice& device = device_for(threads);
+    EmbreeDevice& device = embree_device_for(threads);
     std::vector<glm::vec3> vertices(geometry.view.size());
     for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = glm::vec3(geometry.view[i]);
     std::vector<uint32_t> scene_triangle;  // Embree primitive id -> scene triangle id

@@ -28,26 +28,26 @@ struct ClipVertex {
 
 enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };
 
-// The clip planes of the README's conventions (w >= near, w <= far, |x|, |y| <= w), >= 0 inside.
-double plane_distance(int plane, const glm::dvec4& p, double near, double far) {
+// The clip planes of the README's conventions (w >= near, w <= far, |x|, |y| <= side w), >= 0 inside.
+double plane_distance(int plane, const glm::dvec4& p, double near, double far, double side) {
     switch (plane) {
         case kNear: return p.w - near;
         case kFar: return far - p.w;
-        case kLeft: return p.x + p.w;
-        case kRight: return p.w - p.x;
-        case kBottom: return p.y + p.w;
-        default: return p.w - p.y;
+        case kLeft: return p.x + side * p.w;
+        case kRight: return side * p.w - p.x;
+        case kBottom: return p.y + side * p.w;
+        default: return side * p.w - p.y;
     }
 }
 
 // How far a vertex's distance to the plane can move with its error bound e: |n|.e.
-double plane_distance_error(int plane, const glm::dvec4& e) {
+double plane_distance_error(int plane, const glm::dvec4& e, double side) {
     switch (plane) {
         case kNear:
         case kFar: return e.w;
         case kLeft:
-        case kRight: return e.x + e.w;
-        default: return e.y + e.w;
+        case kRight: return e.x + side * e.w;
+        default: return e.y + side * e.w;
     }
 }
 
@@ -56,15 +56,15 @@ EdgeKind plane_edge_kind(int plane) {
 }
 
 // Sutherland-Hodgman in double, keeping track of which plane made each edge.
-std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double near, double far) {
+std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double near, double far, double side) {
     for (int plane = 0; plane < kPlaneCount && polygon.size() >= 3; ++plane) {
         std::vector<ClipVertex> out;
         const size_t n = polygon.size();
         for (size_t i = 0; i < n; ++i) {
             const ClipVertex& current = polygon[i];
             const ClipVertex& next = polygon[(i + 1) % n];
-            const double d_current = plane_distance(plane, current.clip, near, far);
-            const double d_next = plane_distance(plane, next.clip, near, far);
+            const double d_current = plane_distance(plane, current.clip, near, far, side);
+            const double d_next = plane_distance(plane, next.clip, near, far, side);
             const bool current_in = d_current >= 0.0, next_in = d_next >= 0.0;
             if (current_in) out.push_back(current);
             if (current_in == next_in) continue;
@@ -77,8 +77,8 @@ std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double nea
             cut.clip = in.clip + t * (outside.clip - in.clip);
             cut.magnitudes = glm::max(in.magnitudes, outside.magnitudes);
             cut.error = clip_step_error(
-                {in.clip, in.error, in.magnitudes, d_in, plane_distance_error(plane, in.error)},
-                {outside.clip, outside.error, outside.magnitudes, d_out, plane_distance_error(plane, outside.error)});
+                {in.clip, in.error, in.magnitudes, d_in, plane_distance_error(plane, in.error, side)},
+                {outside.clip, outside.error, outside.magnitudes, d_out, plane_distance_error(plane, outside.error, side)});
             // Leaving the half-space, the next edge runs along the plane; entering it, along the original edge.
             cut.outgoing = current_in ? plane_edge_kind(plane) : current.outgoing;
             out.push_back(cut);
@@ -158,16 +158,19 @@ double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, co
 }
 
 ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geometry)
-    : camera_(geometry.camera),
-      near_(scene.camera.near),
-      far_(scene.camera.far) {
+    : ReferenceGeometry(scene, geometry,
+                        ViewVolume{scene.camera.near, scene.camera.far, scene.settings.snap_bits,
+                                   scene.settings.cull_backfaces, 1.0}) {}
+
+ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geometry, const ViewVolume& volume)
+    : camera_(geometry.camera), near_(volume.near), far_(volume.far) {
     const glm::dmat4 view_magnitude = absolute(camera_.view);
     const size_t triangle_count = geometry.triangles.size();
     triangles_.resize(triangle_count);
     polygons_.resize(triangle_count);
     screen_.reserve(triangle_count * 3);
     edge_kinds_.reserve(triangle_count * 3);
-    const double snap = snap_displacement(scene.settings.snap_bits);
+    const double snap = snap_displacement(volume.snap_bits);
 
     for (uint32_t id = 0; id < triangle_count; ++id) {
         const OracleTriangle& triangle = geometry.triangles[id];
@@ -196,8 +199,8 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
                           plane_noise(edge1, edge2, vertex_magnitude)};
         ReferencePolygon& out = polygons_[id];
         const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
-        out.culled = scene.settings.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
-        if (scene.settings.cull_backfaces) {
+        out.culled = volume.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
+        if (volume.cull_backfaces) {
             const glm::dvec4 clip[3] = {polygon[0].clip, polygon[1].clip, polygon[2].clip};
             const glm::dvec4 error[3] = {polygon[0].error, polygon[1].error, polygon[2].error};
             out.facing_uncertain = facing_is_uncertain(clip, error);
@@ -205,7 +208,7 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
         out.first = static_cast<uint32_t>(screen_.size());
         const std::vector<ClipVertex> original = polygon;
         const bool unbounded = passes_by_the_eye(original, near_);
-        const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_);
+        const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_, volume.side);
         out.count = static_cast<uint32_t>(clipped.size());
         out.radius = snap;
         for (const ClipVertex& v : clipped) {

@@ -49,10 +49,24 @@ struct SquareRange {
     glm::dvec3 min_bary{0.0}, max_bary{0.0};
 };
 
+// What a view clips to and snaps at: its near and far planes, the sub-pixel bits, whether back faces are culled,
+// and its side planes |x|, |y| <= side w. A shadow map's face takes side > 1: its polygons reach a little past its
+// border, so that the side clips' edges lie beyond every texel centre, and the scene's own vertices, which often
+// sit exactly on a face's corner directions (where the side clips' error bound has no finite value), lie strictly
+// inside.
+struct ViewVolume {
+    double near = 0.1, far = 100.0;
+    int snap_bits = 8;
+    bool cull_backfaces = false;
+    double side = 1.0;
+};
+
 class ReferenceGeometry {
 public:
-    // `geometry` is the oracle's view of `scene` (oracle_scene).
+    // `geometry` is the oracle's view of `scene` (oracle_scene), clipped and snapped as the scene's settings say.
     ReferenceGeometry(const Scene& scene, const OracleScene& geometry);
+    // The same for another view of the scene's triangles (oracle_view: a shadow map's face) and its volume.
+    ReferenceGeometry(const Scene& scene, const OracleScene& geometry, const ViewVolume& volume);
 
     size_t size() const { return polygons_.size(); }
     const ReferencePolygon& polygon(uint32_t id) const { return polygons_[id]; }

@@ -58,11 +58,13 @@ const Material& triangle_material(const Scene& scene, const OracleTriangle& tria
     return *material;
 }
 
-OracleScene oracle_scene(const Scene& scene) {
+namespace {
+
+// Camera, triangles, world and view positions (and world errors when `world_errors`).
+OracleScene view_of_scene(const Scene& scene, const Camera& camera, int width, int height, bool world_errors) {
     OracleScene out;
-    out.camera = oracle_camera(scene.camera, scene.settings.width, scene.settings.height);
-    out.camera_error = raster_camera_error(scene.camera, out.camera);
-    const ShadingMode mode = scene.settings.shading;
+    out.camera = oracle_camera(camera, width, height);
+    out.camera_error = raster_camera_error(camera, out.camera);
     for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
         const SceneMesh& mesh = scene.meshes[m];
         const uint32_t first = static_cast<uint32_t>(out.world.size());
@@ -72,13 +74,25 @@ OracleScene oracle_scene(const Scene& scene) {
             const glm::dvec3 world(model * glm::dvec4(glm::dvec3(p), 1.0));
             out.world.push_back(world);
             out.view.push_back(view_of_world(out.camera, world));
-            if (needs_world(mode)) out.world_error.push_back(raster_world_position_error(mesh.model, p));
+            if (world_errors) out.world_error.push_back(raster_world_position_error(mesh.model, p));
         }
         for (uint32_t t = 0; t < mesh.data.triangles.size(); ++t) {
             const auto& v = mesh.data.triangles[t].v;
             out.triangles.push_back({m, t, {first + v[0], first + v[1], first + v[2]}});
         }
     }
+    return out;
+}
+
+}  // namespace
+
+OracleScene oracle_view(const Scene& scene, const Camera& camera, int width, int height) {
+    return view_of_scene(scene, camera, width, height, false);
+}
+
+OracleScene oracle_scene(const Scene& scene) {
+    const ShadingMode mode = scene.settings.shading;
+    OracleScene out = view_of_scene(scene, scene.camera, scene.settings.width, scene.settings.height, needs_world(mode));
     if (needs_normals(mode)) {
         out.normal.assign(out.world.size(), glm::dvec3(0.0));
         out.normal_error.assign(out.world.size(), 0.0);

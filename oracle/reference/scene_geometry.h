@@ -44,4 +44,8 @@ const Material& triangle_material(const Scene& scene, const OracleTriangle& tria
 // left out). Either is zero where it has no direction.
 OracleScene oracle_scene(const Scene& scene);
 
+// The scene's triangles seen by another camera into a width x height image (a shadow map's face): camera, its
+// error bounds, triangles, world and view positions; no normals or attribute errors.
+OracleScene oracle_view(const Scene& scene, const Camera& camera, int width, int height);
+
 }  // namespace raster::oracle

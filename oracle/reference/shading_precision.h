@@ -66,6 +66,9 @@ inline constexpr int kGoochTiltRoundings = 2;
 inline constexpr int kGoochBlendRoundings = 3;
 inline constexpr int kGoochToneRoundings = 5;
 
+// raster's interpolation sum_i b_i v_i over boxes: gamma_3 of sum_i |b_i| |v_i| per component.
+Interval3 float_interpolate(const Interval3& bary, const Interval3 values[3]);
+
 // `value` widened by k float roundings relative to its own magnitude.
 Interval after_roundings(Interval value, int k);
 Interval3 after_roundings(const Interval3& value, int k);

@@ -1,4 +1,4 @@
-// Every corpus scene (and seed 003's textured scene) compared with the oracle at 1 and 16 samples per pixel (and at 1 with back faces culled): no
+// Every corpus scene (and seed 003's textured and shadowed scenes) compared with the oracle at 1 and 16 samples per pixel (and at 1 with back faces culled): no
 // genuine disagreement, except known divergences listed with a reason in corpus/expectations/oracle.txt (an entry
 // that no longer diverges fails).
 #include <filesystem>
@@ -29,8 +29,9 @@ std::vector<CorpusCase> corpus_cases() {
     for (const auto& entry : fs::directory_iterator(kSource / "corpus/scenes"))
         if (entry.is_regular_file()) scenes.push_back(entry.path());
     std::sort(scenes.begin(), scenes.end());
-    // The seed 003 scene with a texture from its OBJ's material, in the course's own format.
+    // The seed 003 scenes with a texture from its OBJ's material, and with shadows, in the course's own format.
     scenes.push_back(kSource / "corpus/seeds/003/textured.json");
+    scenes.push_back(kSource / "corpus/seeds/003/shadows.json");
     std::vector<CorpusCase> cases;
     for (const fs::path& scene : scenes)
         for (int samples : {1, 16}) cases.push_back({scene, samples});
@@ -67,6 +68,12 @@ TEST_P(CorpusAgainstOracle, hasNoGenuineDisagreement) {
     EXPECT_EQ(total, comparison.raster.visibility.size());
     EXPECT_LE(counts.ambiguous_total(), total / 1000) << harness::comparison_summary(comparison);
     EXPECT_GT(comparison.png.judged, uint64_t(comparison.width) * comparison.height * 99 / 100);
+    // The shadow model's two views of the scene (the ray, the exact footprint) never disagree, and it leaves at most
+    // 2% of the pixels open.
+    EXPECT_EQ(comparison.shadow_inconsistent_pixels, 0u) << harness::comparison_summary(comparison);
+    EXPECT_LE(comparison.shadow_edge_pixels + comparison.shadow_depth_pixels,
+              uint64_t(comparison.width) * comparison.height / 50)
+        << harness::comparison_summary(comparison);
 }
 
 std::string case_name(const ::testing::TestParamInfo<CorpusCase>& info) {
