@@ -74,7 +74,7 @@ void register_tradeoff_flags(CLI::App& app, TradeoffFlags& flags) {
 std::vector<const harness::TradeoffMode*> modes_for(const TradeoffFlags& flags, const Scene& scene, std::ostream& err) {
     std::vector<const harness::TradeoffMode*> modes;
     if (flags.modes.empty()) {
-        for (const harness::TradeoffMode* mode : harness::default_sweep(scene.settings, has_textures(scene))) {
+        for (const harness::TradeoffMode* mode : harness::default_sweep(scene.settings, harness::scene_features(scene))) {
             const std::string problem = settings_problem(harness::apply_mode(*mode, scene.settings));
             if (problem.empty())
                 modes.push_back(mode);

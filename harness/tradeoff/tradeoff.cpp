@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 #include "harness/comparison/decoded_image.h"
@@ -14,6 +15,7 @@
 #include "oracle/reference/oracle_image.h"
 #include "oracle/reference/reference_geometry.h"
 #include "oracle/reference/scene_geometry.h"
+#include "oracle/reference/shadow_oracle.h"
 #include "raster/core/conventions.h"
 #include "raster/texture/mip_chains.h"
 #include "raster/core/parallel.h"
@@ -156,7 +158,11 @@ Image reference_image(const Scene& scene, int grid, const TradeoffOptions& optio
     oracle_options.mode = options.oracle_mode;
     oracle_options.threads = options.threads;
     oracle::render_oracle(reference, geometry, oracle_options, visibility);
-    const oracle::OracleShader shader(reference, geometry);
+    // Shadows ray traced: the exact answer at every sample.
+    std::unique_ptr<oracle::ShadowOracle> shadows;
+    if (has_shadows(reference) && reference.settings.shading != ShadingMode::unlit)
+        shadows = std::make_unique<oracle::ShadowOracle>(reference, geometry, options.threads);
+    const oracle::OracleShader shader(reference, geometry, shadows.get(), oracle::ShadowAnswer::exact);
     const oracle::ResolveSettings resolve{reference.settings.samples, false, false,
                                           glm::dvec3(reference.settings.background)};
     return image_of(oracle::render_image(shader, visibility, resolve, options.threads));

@@ -22,15 +22,18 @@ TradeoffMode standard_samples(int samples) {
         }};
 }
 
-// A preset: every axis set at once, whatever the scene asked for.
+// A preset: every axis set at once, whatever the scene asked for (shadow maps: resolution and filter; the bias is
+// the scene's).
 TradeoffMode preset(std::string name, std::string description, int snap_bits, int samples, SamplePattern pattern,
-                    bool msaa, PrecisionModes precision) {
+                    bool msaa, PrecisionModes precision, int shadow_resolution, int pcf) {
     return {std::move(name), std::move(description), [=](RenderSettings& s) {
                 s.snap_bits = snap_bits;
                 s.samples = samples;
                 s.pattern = pattern;
                 s.msaa = msaa;
                 s.modes = precision;
+                s.shadows.resolution = shadow_resolution;
+                s.shadows.pcf = pcf;
             }};
 }
 
@@ -44,7 +47,28 @@ TradeoffMode grid(int side) {
 
 TradeoffMode filter(TextureFilter f, const char* description) {
     return {std::string("filter-") + to_string(f), description, [f](RenderSettings& s) { s.texture_filter = f; },
-            /*needs_textures=*/true};
+            ModeNeeds::textures};
+}
+
+TradeoffMode shadow_resolution(int resolution) {
+    return {"shadow" + std::to_string(resolution),
+            "shadow maps of " + std::to_string(resolution) + " x " + std::to_string(resolution) + " texels per face",
+            [resolution](RenderSettings& s) { s.shadows.resolution = resolution; }, ModeNeeds::shadows};
+}
+
+TradeoffMode pcf(int taps) {
+    const std::string n = std::to_string(taps);
+    return {"pcf" + n, taps == 1 ? "one shadow map texel per lookup" : n + " x " + n + " percentage-closer filtering",
+            [taps](RenderSettings& s) { s.shadows.pcf = taps; }, ModeNeeds::shadows};
+}
+
+TradeoffMode shadow_bias(std::string name, std::string description, float bias, float slope_bias) {
+    return {std::move(name), std::move(description),
+            [=](RenderSettings& s) {
+                s.shadows.bias = bias;
+                s.shadows.slope_bias = slope_bias;
+            },
+            ModeNeeds::shadows};
 }
 
 TradeoffMode msaa(int samples) {
@@ -89,18 +113,30 @@ std::vector<TradeoffMode> make_catalogue() {
     modes.push_back(filter(TextureFilter::bilinear, "every texture bilinear at level 0 (no mipmaps)"));
     modes.push_back(filter(TextureFilter::trilinear, "every texture trilinear: bilinear in two mip levels, blended"));
     modes.push_back(filter(TextureFilter::anisotropic, "every texture anisotropic: trilinear taps along the footprint"));
-    modes.push_back(preset("fastest", "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band", 4, 1,
-                           SamplePattern::standard, false,
+    for (int resolution : {512, 1024, 2048, 4096}) modes.push_back(shadow_resolution(resolution));
+    for (int taps : {1, 3, 5}) modes.push_back(pcf(taps));
+    modes.push_back(shadow_bias("shadow-bias-low", "shadow bias 1e-4 of the depth, slope bias 1", 1e-4f, 1.0f));
+    modes.push_back(shadow_bias("shadow-bias-high", "shadow bias 1e-2 of the depth, slope bias 4", 1e-2f, 4.0f));
+    modes.push_back(preset("fastest",
+                           "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band, 512 shadow texels, no PCF",
+                           4, 1, SamplePattern::standard, false,
                            {EdgeArithmetic::float32, Interpolation::affine, DepthFormat::fixed24,
-                            Clipping::guard_band, true}));
-    modes.push_back(preset("balanced", "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, guard band",
+                            Clipping::guard_band, true},
+                           512, 1));
+    modes.push_back(preset("balanced",
+                           "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, guard band, 1024 shadow "
+                           "texels, 3x3 PCF",
                            8, 4, SamplePattern::standard, true,
                            {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
-                            Clipping::guard_band, true}));
-    modes.push_back(preset("exact", "16 bits, fixed edges, 8x8 grid SSAA, perspective, reversed-Z, full clipping",
+                            Clipping::guard_band, true},
+                           1024, 3));
+    modes.push_back(preset("exact",
+                           "16 bits, fixed edges, 8x8 grid SSAA, perspective, reversed-Z, full clipping, 4096 shadow "
+                           "texels, no PCF",
                            16, 64, SamplePattern::grid, false,
                            {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
-                            Clipping::full, true}));
+                            Clipping::full, true},
+                           4096, 1));
     return modes;
 }
 
@@ -130,17 +166,24 @@ RenderSettings apply_mode(const TradeoffMode& mode, RenderSettings baseline) {
 
 bool same_mode_settings(const RenderSettings& a, const RenderSettings& b) {
     return a.snap_bits == b.snap_bits && a.samples == b.samples && a.pattern == b.pattern && a.msaa == b.msaa &&
-           a.texture_filter == b.texture_filter &&
+           a.texture_filter == b.texture_filter && a.shadows.resolution == b.shadows.resolution &&
+           a.shadows.bias == b.shadows.bias && a.shadows.slope_bias == b.shadows.slope_bias &&
+           a.shadows.pcf == b.shadows.pcf &&
            a.modes.edges == b.modes.edges && a.modes.interpolation == b.modes.interpolation &&
            a.modes.depth == b.modes.depth && a.modes.clipping == b.modes.clipping &&
            a.modes.hierarchical_z == b.modes.hierarchical_z;
 }
 
-std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, bool textured) {
+SceneFeatures scene_features(const Scene& scene) {
+    return {has_textures(scene), has_shadows(scene) && scene.settings.shading != ShadingMode::unlit};
+}
+
+std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, const SceneFeatures& features) {
     std::vector<const TradeoffMode*> sweep;
     std::vector<RenderSettings> seen;
     for (const TradeoffMode& mode : tradeoff_modes()) {
-        if (mode.needs_textures && !textured) continue;
+        if (mode.needs == ModeNeeds::textures && !features.textures) continue;
+        if (mode.needs == ModeNeeds::shadows && !features.shadows) continue;
         const RenderSettings settings = apply_mode(mode, baseline);
         bool duplicate = false;
         for (const RenderSettings& other : seen) duplicate = duplicate || same_mode_settings(settings, other);
@@ -161,7 +204,12 @@ nlohmann::json mode_settings_json(const RenderSettings& s) {
             {"depth", to_string(s.modes.depth)},
             {"clipping", to_string(s.modes.clipping)},
             {"hierarchical_z", s.modes.hierarchical_z},
-            {"texture_filter", s.texture_filter ? to_string(*s.texture_filter) : "the materials'"}};
+            {"texture_filter", s.texture_filter ? to_string(*s.texture_filter) : "the materials'"},
+            {"shadows",
+             {{"resolution", s.shadows.resolution},
+              {"bias", s.shadows.bias},
+              {"slope_bias", s.shadows.slope_bias},
+              {"pcf", s.shadows.pcf}}}};
 }
 
 }  // namespace raster::harness

@@ -1,6 +1,6 @@
 // The speed/accuracy modes `raster tradeoff` sweeps: each a stable short name for one change to a scene's render
 // settings (sub-pixel bits, edge arithmetic, samples and pattern, MSAA, interpolation, depth format, clipping,
-// hierarchical Z), or a named preset that sets all of them.
+// hierarchical Z, texture filter, shadow map resolution, bias and filter), or a named preset that sets all of them.
 #pragma once
 
 #include <functional>
@@ -13,12 +13,23 @@
 
 namespace raster::harness {
 
+// What a scene must have for a mode to change anything: a texture filter needs textures, a shadow map setting a
+// light that casts shadows.
+enum class ModeNeeds { nothing, textures, shadows };
+
 struct TradeoffMode {
     std::string name;         // e.g. "baseline", "snap4", "edges-float", "grid8x8", "affine", "fastest"
     std::string description;  // one line, for --list-modes and the JSON
     std::function<void(RenderSettings&)> apply;  // the change, made to the scene's own settings
-    bool needs_textures = false;                 // a texture filter: only swept on textured scenes
+    ModeNeeds needs = ModeNeeds::nothing;        // only swept on scenes that have it
 };
+
+// What a scene has that modes may need.
+struct SceneFeatures {
+    bool textures = false;
+    bool shadows = false;
+};
+SceneFeatures scene_features(const Scene& scene);
 
 // Every mode, in the default sweep's order: "baseline" (the scene's own settings), then the one-axis variations
 // grouped by axis, then the presets "fastest", "balanced" and "exact".
@@ -33,15 +44,17 @@ std::string tradeoff_mode_names();
 // `baseline` with the mode applied.
 RenderSettings apply_mode(const TradeoffMode& mode, RenderSettings baseline);
 
-// True when a and b agree on every field a mode can change (snap bits, samples, pattern, MSAA, PrecisionModes).
+// True when a and b agree on every field a mode can change (snap bits, samples, pattern, MSAA, PrecisionModes,
+// texture filter, shadow settings).
 bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
 
 // The default sweep for a scene: every mode in catalogue order, leaving out each whose settings equal those of a
 // mode already in the list (snap8 when the scene already snaps to 8 bits, samples1 when it has 1 sample, ...), so
 // every point of the plot is a distinct configuration.
-std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, bool textured = false);
+std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, const SceneFeatures& features = {});
 
-// {snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z}
+// {snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z, texture_filter,
+//  shadows: {resolution, bias, slope_bias, pcf}}
 nlohmann::json mode_settings_json(const RenderSettings& settings);
 
 }  // namespace raster::harness

@@ -122,6 +122,36 @@ TEST(TradeoffModes, theDefaultSweepLeavesOutModesThatRepeatTheBaseline) {
     EXPECT_FALSE(with_four.count("samples4"));
 }
 
+TEST(TradeoffModes, shadowModesAreSweptOnlyWhereALightCastsShadowsAndSetWhatTheyName) {
+    auto has = [](const std::vector<const TradeoffMode*>& sweep, const std::string& name) {
+        for (const TradeoffMode* mode : sweep)
+            if (mode->name == name) return true;
+        return false;
+    };
+    const RenderSettings base;  // 1024 texels, pcf 1
+    const std::vector<const TradeoffMode*> plain = default_sweep(base);
+    const std::vector<const TradeoffMode*> shadowed = default_sweep(base, SceneFeatures{false, true});
+    for (const char* name : {"shadow512", "shadow2048", "shadow4096", "pcf3", "pcf5", "shadow-bias-low",
+                             "shadow-bias-high"}) {
+        EXPECT_FALSE(has(plain, name)) << name;
+        EXPECT_TRUE(has(shadowed, name)) << name;
+    }
+    EXPECT_FALSE(has(shadowed, "shadow1024"));  // the default resolution: baseline already
+    EXPECT_FALSE(has(shadowed, "pcf1"));
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("shadow4096"), base).shadows.resolution, 4096);
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("pcf5"), base).shadows.pcf, 5);
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("shadow-bias-high"), base).shadows.slope_bias, 4.0f);
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("fastest"), base).shadows.resolution, 512);
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("exact"), base).shadows.resolution, 4096);
+    // A lit scene whose light casts shadows has the feature; the same scene unlit does not.
+    Scene scene;
+    scene.settings.shading = ShadingMode::blinn_phong;
+    scene.lights.push_back({glm::vec3(0.0f, 4.0f, 0.0f), glm::vec3(1.0f), 1.0f, false, true});
+    EXPECT_TRUE(scene_features(scene).shadows);
+    scene.settings.shading = ShadingMode::unlit;
+    EXPECT_FALSE(scene_features(scene).shadows);
+}
+
 TEST(TradeoffReport, theReportLinksThePlotAndTheTable) {
     TempDir dir;
     const fs::path scene = small_scene(dir, "single_triangle.yaml", 32, 24);

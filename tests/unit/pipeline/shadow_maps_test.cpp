@@ -75,8 +75,12 @@ TEST(ShadowMaps, darkenWhatTheOccluderHidesAndNothingElse) {
         for (float z = -3.0f; z <= 3.0f; z += 0.3f) {
             const float reach = std::max(std::fabs(x), std::fabs(z));
             const float visible = maps.visibility(0, {x, 0, z}, kUp);
-            if (reach < 0.6f) EXPECT_EQ(visible, 0.0f) << x << " " << z;
-            if (reach > 0.75f) EXPECT_EQ(visible, 1.0f) << x << " " << z;
+            if (reach < 0.6f) {
+                EXPECT_EQ(visible, 0.0f) << x << " " << z;
+            }
+            if (reach > 0.75f) {
+                EXPECT_EQ(visible, 1.0f) << x << " " << z;
+            }
         }
     // The occluder's own top faces the light: lit.
     EXPECT_EQ(maps.visibility(0, {0.2f, 1.0f, 0.1f}, kUp), 1.0f);
