@@ -56,7 +56,7 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
         } catch (const InputError& error) {  // a setting the flags made invalid: name the scene it is for
             throw InputError(flags.scene, 0, 0, error.message());
         }
-        if (std::string problem = harness::comparison_problem(scene.settings); !problem.empty())
+        if (std::string problem = harness::comparison_problem(scene); !problem.empty())
             throw InputError(flags.scene, 0, 0, problem);
     } catch (const InputError& error) {
         err << "raster compare: error: " << error.what() << "\n";

@@ -61,11 +61,13 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
             {"samples", stats.samples},
             {"covered_samples", stats.covered_samples},
             {"hidden_blocks", stats.hidden_blocks},
+            {"transparent_fragments", stats.transparent_fragments},
             {"ms_vertex", stats.ms_vertex},
             {"ms_setup", stats.ms_setup},
             {"ms_shadow", stats.ms_shadow},
             {"ms_raster", stats.ms_raster},
             {"ms_shade", stats.ms_shade},
+            {"ms_transparency", stats.ms_transparency},
             {"ms_total", stats.ms_total}};
 }
 

@@ -139,7 +139,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
             if (flags.samples) scene.settings.samples = *flags.samples;
             if (std::string problem = settings_problem(scene.settings); !problem.empty())
                 throw InputError(file.string(), 0, 0, problem);
-            if (std::string problem = harness::comparison_problem(scene.settings); !problem.empty())
+            if (std::string problem = harness::comparison_problem(scene); !problem.empty())
                 throw InputError(file.string(), 0, 0, problem);
             scenes.push_back(std::move(scene));
         }

@@ -46,6 +46,14 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
         ->check(CLI::Range(0.0f, 64.0f));
     command.add_option("--pcf", flags.pcf, "Percentage-closer filtering: 1, 3 or 5 texels per side (default 1)")
         ->check(CLI::IsMember({1, 3, 5}));
+    command.add_option("--transparency", flags.transparency,
+                       "Transparent surfaces: sorted (an A-buffer, sorted per sample; default) or weighted (a weighted "
+                       "average, no sort: faster, approximate where layers of different colours overlap)")
+        ->check(CLI::IsMember({"sorted", "weighted"}));
+    command.add_option("--max-fragments", flags.max_fragments,
+                       "sorted transparency: the A-buffer's cap on transparent fragments in the frame, 1..134217728, "
+                       "24 bytes each (default 16777216)")
+        ->check(CLI::Range(static_cast<int>(kMinFragments), static_cast<int>(kMaxFragments)));
     command.add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
     command.add_option("--threads", flags.threads, "Worker threads, 0 = all cores (the output is the same for any count)")
         ->check(CLI::Range(0, 256));
@@ -77,6 +85,8 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     if (flags.shadow_bias) settings.shadows.bias = *flags.shadow_bias;
     if (flags.shadow_slope_bias) settings.shadows.slope_bias = *flags.shadow_slope_bias;
     if (flags.pcf) settings.shadows.pcf = *flags.pcf;
+    if (flags.transparency) parse_transparency_mode(*flags.transparency, settings.transparency.mode);
+    if (flags.max_fragments) settings.transparency.max_fragments = *flags.max_fragments;
     if (std::string problem = settings_problem(settings); !problem.empty()) throw InputError("", 0, 0, problem);
     validate_scene(scene);  // the shadow maps' memory, which depends on the lights
 }

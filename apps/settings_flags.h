@@ -24,11 +24,14 @@ struct SettingsFlags {
     bool shadows = false;  // every light casts shadows
     std::optional<int> shadow_resolution, pcf;
     std::optional<float> shadow_bias, shadow_slope_bias;
+    std::optional<std::string> transparency;  // sorted | weighted
+    std::optional<int> max_fragments;
     bool alpha = false;
     int threads = 0;
 };
 
-// Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, the shadow flags, --alpha and
+// Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, the shadow and
+// transparency flags, --alpha and
 // --threads.
 void register_settings_flags(CLI::App& command, SettingsFlags& flags);
 

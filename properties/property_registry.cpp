@@ -15,7 +15,7 @@ namespace {
 const char* const kSuiteOrder[] = {
     "Watertight", "Coverage", "FillRule", "Barycentrics", "Depth", "ViewMatrix", "Projection", "Matrices",
     "ModelMatrix", "NormalMatrix", "Clip", "Sampling", "Extremes", "Lighting", "MipChain", "Wrap", "Trilinear",
-    "LevelOfDetail", "Texture", "Shadow",
+    "LevelOfDetail", "Texture", "Shadow", "Transparency",
 };
 
 // A function's static, so that it exists before the first RASTER_PROPERTY of any source registers into it.

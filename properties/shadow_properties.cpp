@@ -15,6 +15,7 @@
 #include "properties/generators/primitives.h"
 #include "properties/printing.h"
 #include "properties/property_registry.h"
+#include "properties/stage_driver.h"
 #include "raster/pipeline/shadow_maps.h"
 #include "raster/pipeline/vertex_stage.h"
 
@@ -137,8 +138,7 @@ RASTER_DRAWING_PROPERTY(Shadow, aPointNoOccluderComesNearIsLitAndOneWellInsideAn
     ShadowCase c = shadow_case();
     const ShadowSettings& settings = c.scene.settings.shadows;
     const TransformedScene geometry = run_vertex_stage(c.scene, vertex_stage_needs(c.scene.settings.shading));
-    const ShadowMaps maps(c.scene, geometry.world_position, impl.stages,
-                          {impl.backend.path, impl.backend.allow_simd, impl.backend.threads});
+    const ShadowMaps maps = shadow_maps_with(impl, c.scene, geometry.world_position);
     const double footprint = (std::sqrt(2.0) * (settings.pcf / 2.0 + 0.5) + 0.5) * 2.0 / settings.resolution;
     const glm::dvec3 light(c.scene.lights[0].position);
     int lit = 0, shadowed = 0;

@@ -118,6 +118,11 @@ std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
     return counts;
 }
 
+ShadowMaps shadow_maps_with(const Implementation& impl, const Scene& scene, const std::vector<glm::vec3>& world_positions) {
+    ++rasterizer_run_count;
+    return ShadowMaps(scene, world_positions, impl.stages, {impl.backend.path, impl.backend.allow_simd, impl.backend.threads});
+}
+
 RenderResult render_with(const Implementation& impl, const Scene& scene) {
     RenderOptions options;
     options.threads = impl.backend.threads;

@@ -17,6 +17,7 @@
 #include "raster/pipeline/render.h"
 #include "raster/scene/scene.h"
 #include "raster/pipeline/setup.h"
+#include "raster/pipeline/shadow_maps.h"
 #include "raster/pipeline/visibility_buffer.h"
 #include "properties/reference/coverage_reference.h"
 
@@ -88,7 +89,11 @@ std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
 // render() with the implementation's stages on its backend (renderer, SIMD, hierarchical Z, threads).
 RenderResult render_with(const Implementation& impl, const Scene& scene);
 
-// How many times this thread has rasterized through rasterize_setups or render_with: the registry's test uses it
+// The scene's shadow maps, rendered with the implementation's stages on its backend from the vertex stage's world
+// positions (what a frame's shading reads).
+ShadowMaps shadow_maps_with(const Implementation& impl, const Scene& scene, const std::vector<glm::vec3>& world_positions);
+
+// How many times this thread has rasterized through rasterize_setups, render_with or shadow_maps_with: the registry's test uses it
 // to check that exactly the properties registered as drawing ones draw.
 size_t rasterizer_runs();
 

@@ -29,7 +29,11 @@ uint64_t comparison_bytes(const RenderSettings& settings) {
     return frame_bytes(settings) + pixels * uint64_t(std::max(settings.samples, 0)) * 21u + pixels * 50u;
 }
 
-std::string comparison_problem(const RenderSettings& settings) {
+std::string comparison_problem(const Scene& scene) {
+    if (has_transparency(scene))
+        return "the oracle does not model transparency yet (README \"Transparency\"): a material with opacity below 1 "
+               "cannot be compared";
+    const RenderSettings& settings = scene.settings;
     const uint64_t bytes = comparison_bytes(settings);
     if (bytes <= kMaxFrameBytes) return "";
     return "comparing a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " image with " +

@@ -56,8 +56,9 @@ struct Comparison {
 // sample), the oracle's sample buffer (20) and the classes (1) per sample; per pixel the images, the decoded files
 // and the colour bounds (about 50). compare_scene refuses frames above kMaxFrameBytes (comparison_problem).
 uint64_t comparison_bytes(const RenderSettings& settings);
-// Empty when a comparison of `settings` fits the cap, else what is wrong.
-std::string comparison_problem(const RenderSettings& settings);
+// Empty when the scene can be compared: no transparency (the oracle does not model it yet) and a frame that fits
+// the cap; else what is wrong.
+std::string comparison_problem(const Scene& scene);
 
 // Renders and compares. `stages` are raster's (a test passes a mutant's); the oracle has none of them. The scene
 // must be valid (scene/validation.h) and fit the comparison's memory cap (comparison_problem). Throws OracleError

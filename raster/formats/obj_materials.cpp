@@ -34,9 +34,7 @@ Material material_for(const FoundMaterial& found, const std::optional<Material>&
         if (mtl.specular) material.specular = *mtl.specular;
         if (mtl.exponent) material.exponent = *mtl.exponent;
     }
-    if (mtl.opacity && *mtl.opacity < 1.0f)
-        std::fprintf(stderr, "%s:%lld: warning: material '%s' has opacity %g; transparency is not drawn, so it is drawn opaque\n",
-                     found.library.string().c_str(), static_cast<long long>(mtl.line), mtl.name.c_str(), *mtl.opacity);
+    if (mtl.opacity) material.opacity = *mtl.opacity;  // d / Tr: whatever the scene gives for the coefficients
     if (mtl.diffuse_map) {
         const std::filesystem::path image = found.library.parent_path() / mtl.diffuse_map->file;
         TextureBinding binding;

@@ -170,8 +170,8 @@ void read_texture_keys(const Node& node, const DocumentReader& reader, const Tex
 
 Material read_material(const Node& node, const DocumentReader& reader, const TextureFileLoader& load_texture) {
     reader.expect_map(node, "material");
-    reader.check_keys(node, {"color", "ambient", "diffuse", "specular", "exponent", "texture", "filter", "wrap",
-                             "max_anisotropy"});
+    reader.check_keys(node, {"color", "ambient", "diffuse", "specular", "exponent", "opacity", "texture", "filter",
+                             "wrap", "max_anisotropy"});
     Material material;
     if (const Node& v = reader.optional(node, "color"); v.is_defined()) material.color = read_color(v, reader, "material color");
     if (const Node& v = reader.optional(node, "ambient"); v.is_defined()) material.ambient = read_color(v, reader, "ambient");
@@ -180,6 +180,10 @@ Material read_material(const Node& node, const DocumentReader& reader, const Tex
     if (const Node& v = reader.optional(node, "exponent"); v.is_defined()) {
         material.exponent = reader.finite_float(v, "exponent");
         if (material.exponent < 0.0f) reader.fail(v, "exponent must be >= 0");
+    }
+    if (const Node& v = reader.optional(node, "opacity"); v.is_defined()) {
+        material.opacity = reader.finite_float(v, "opacity");
+        if (material.opacity < 0.0f || material.opacity > 1.0f) reader.fail(v, "opacity must be in [0, 1]");
     }
     read_texture_keys(node, reader, load_texture, material);
     return material;

@@ -29,12 +29,26 @@ void read_shadow_settings(const Node& node, const DocumentReader& reader, Shadow
     }
 }
 
+// render.transparency: mode, max_fragments, each optional (README "Transparency").
+void read_transparency_settings(const Node& node, const DocumentReader& reader, TransparencySettings& transparency) {
+    reader.expect_map(node, "transparency");
+    reader.check_keys(node, {"mode", "max_fragments"});
+    if (const Node& v = reader.optional(node, "mode"); v.is_defined()) {
+        if (!parse_transparency_mode(reader.string(v, "transparency mode"), transparency.mode))
+            reader.fail(v, "transparency mode must be 'sorted' or 'weighted'");
+    }
+    if (const Node& v = reader.optional(node, "max_fragments"); v.is_defined())
+        transparency.max_fragments = reader.integer(v, "max_fragments", static_cast<int>(kMinFragments),
+                                                    static_cast<int>(kMaxFragments));
+}
+
 }  // namespace
 
 void read_raster_render(const Node& node, const DocumentReader& reader, RenderSettings& settings) {
     reader.expect_map(node, "render");
     reader.check_keys(node, {"samples", "pattern", "msaa", "shading", "cull", "snap_bits", "ambient", "edges",
-                             "interpolation", "depth", "clipping", "hierarchical_z", "cel_bands", "gooch", "shadows"});
+                             "interpolation", "depth", "clipping", "hierarchical_z", "cel_bands", "gooch", "shadows",
+                             "transparency"});
     if (const Node& v = reader.optional(node, "samples"); v.is_defined())
         settings.samples = reader.integer(v, "samples", 1, 256);
     if (const Node& v = reader.optional(node, "pattern"); v.is_defined()) {
@@ -85,6 +99,8 @@ void read_raster_render(const Node& node, const DocumentReader& reader, RenderSe
     if (const Node& v = reader.optional(node, "hierarchical_z"); v.is_defined())
         modes.hierarchical_z = reader.boolean(v, "hierarchical_z");
     if (const Node& v = reader.optional(node, "shadows"); v.is_defined()) read_shadow_settings(v, reader, settings.shadows);
+    if (const Node& v = reader.optional(node, "transparency"); v.is_defined())
+        read_transparency_settings(v, reader, settings.transparency);
 }
 
 

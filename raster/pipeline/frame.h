@@ -37,13 +37,16 @@ struct RenderStats {
     // and ms_shade split that interleaved time in proportion to the time its threads spent in each.
     double ms_vertex = 0, ms_setup = 0, ms_raster = 0, ms_shade = 0, ms_total = 0;
     double ms_shadow = 0;  // rendering the shadow maps (their own vertex, setup and raster work), 0 without shadows
+    double ms_transparency = 0;     // the transparency pass, 0 in an opaque scene
+    size_t transparent_fragments = 0;  // transparent fragments in front of the opaque surfaces
 };
 
 // Per-frame buffers a renderer keeps in its result, so that render_into on the same result reuses their memory
 // instead of paging in fresh memory every frame (tens of MB of triangle setups on an 80k-triangle mesh).
 struct RenderWorkspace {
     std::vector<std::vector<TriangleSetup>> chunk_setups;
-    std::vector<TriangleSetup> setups;
+    std::vector<TriangleSetup> setups;              // the opaque triangles' (every triangle's in an opaque scene)
+    std::vector<TriangleSetup> transparent_setups;  // the transparent triangles', drawn after (transparency.h)
     std::vector<std::vector<uint32_t>> tile_bins;  // the tiled renderer's per-tile setup lists
 };
 

@@ -5,6 +5,7 @@
 
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
+#include "raster/pipeline/transparency.h"
 
 namespace raster {
 namespace {
@@ -67,6 +68,8 @@ FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const P
                  frame_params_for(scene, stages.sample_offsets(settings.samples, settings.pattern), options.threads)};
     const auto start = Clock::now();
     set_up_triangles_into(out.geometry, out.frame, stages, settings.cull_backfaces, result.stats, result.workspace);
+    split_transparent_setups(transparent_triangles(scene), result.workspace.setups,
+                             result.workspace.transparent_setups);
     result.stats.ms_setup = milliseconds_since(start);
     return out;
 }
@@ -78,6 +81,21 @@ ShadowMaps build_shadow_maps(const Scene& scene, const FrontEnd& front, const Re
     ShadowMaps maps(scene, front.geometry.world_position, stages, {options.path, options.allow_simd, options.threads});
     stats.ms_shadow = milliseconds_since(start);
     return maps;
+}
+
+void composite_transparency_timed(const Scene& scene, const FrontEnd& front, const Shader& shader,
+                                  const ResolveParams& resolve, RenderResult& result) {
+    if (result.workspace.transparent_setups.empty()) return;
+    const auto start = Clock::now();
+    TransparencyInputs inputs;
+    inputs.setups = &result.workspace.transparent_setups;
+    inputs.frame = &front.frame;
+    inputs.opaque = &result.visibility;
+    inputs.shader = &shader;
+    inputs.resolve = resolve;
+    inputs.settings = scene.settings.transparency;
+    result.stats.transparent_fragments = composite_transparency(inputs, result.image);
+    result.stats.ms_transparency = milliseconds_since(start);
 }
 
 ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options) {

@@ -42,6 +42,11 @@ FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const P
 ShadowMaps build_shadow_maps(const Scene& scene, const FrontEnd& front, const RenderOptions& options,
                              const PipelineStages& stages, RenderStats& stats);
 
+// The transparency pass (transparency.h) over the frame just resolved into result.image from result.visibility,
+// when the front end set aside transparent setups; times ms_transparency.
+void composite_transparency_timed(const Scene& scene, const FrontEnd& front, const Shader& shader,
+                                  const ResolveParams& resolve, RenderResult& result);
+
 // The resolve parameters the scene's settings and the options ask for.
 ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& options);
 

@@ -21,8 +21,10 @@ void render_reference_into(const Scene& scene, const RenderOptions& options, con
     const ShadowMaps shadows = build_shadow_maps(scene, front, options, stages, stats);
     stage_start = Clock::now();
     const Shader shader(scene, front.geometry, stages.lighting, &shadows);
-    resolve_image(result.visibility, shader, resolve_params_for(scene, options), result.image);
+    const ResolveParams resolve = resolve_params_for(scene, options);
+    resolve_image(result.visibility, shader, resolve, result.image);
     stats.ms_shade = milliseconds_since(stage_start);
+    composite_transparency_timed(scene, front, shader, resolve, result);
 
     for (uint32_t id : result.visibility.triangle) stats.covered_samples += id != kNoTriangle;
     stats.ms_total = milliseconds_since(start);

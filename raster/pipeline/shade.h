@@ -31,6 +31,8 @@ public:
 
     // Linear RGB of triangle `triangle` at barycentrics `bary` (w.r.t. its original vertices), unclamped.
     glm::vec3 shade(uint32_t triangle, const glm::vec3& bary) const;
+    // The opacity of the triangle's material (1 opaque).
+    float opacity(uint32_t triangle) const { return material(triangle).opacity; }
 
 private:
     // The face colour, else the interpolated vertex colour, else the material colour; no texture.

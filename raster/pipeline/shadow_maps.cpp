@@ -10,6 +10,7 @@
 
 #include "raster/pipeline/front_end.h"
 #include "raster/pipeline/tiled_renderer.h"
+#include "raster/pipeline/transparency.h"
 
 namespace raster {
 namespace {
@@ -37,8 +38,9 @@ void render_face(const Scene& scene, const Camera& camera, const PipelineStages&
     frame.clip = ClipVolume{camera.near, camera.far, 1.0};
     frame.threads = options.threads;
     RenderStats stats;
-    const std::vector<TriangleSetup> setups =
-        set_up_triangles(geometry, frame, stages, /*cull_backfaces=*/false, stats);
+    std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, stages, /*cull_backfaces=*/false, stats);
+    std::vector<TriangleSetup> transparent;  // cast no shadow (README "Transparency")
+    split_transparent_setups(transparent_triangles(scene), setups, transparent);
     if (options.path == RasterPath::tiled) {
         rasterize_depth_tiled(setups, frame, options.allow_simd, depth);
         return;

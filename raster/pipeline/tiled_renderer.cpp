@@ -303,11 +303,13 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
     stage_start = Clock::now();
     const int samples = frame.samples();
     const Shader shader(scene, front.geometry, stages.lighting, &shadows);
-    const PixelResolver resolver(shader, resolve_params_for(scene, options), samples);
+    const ResolveParams resolve = resolve_params_for(scene, options);
+    const PixelResolver resolver(shader, resolve, samples);
     Image& image = result.image;
     size_image(image, settings.width, settings.height, resolver.channels());
     VisibilityBuffer* visibility = nullptr;
-    if (options.keep_visibility) {
+    // The transparency pass reads the opaque surfaces' samples.
+    if (options.keep_visibility || !result.workspace.transparent_setups.empty()) {
         result.visibility.resize(settings.width, settings.height, samples);
         visibility = &result.visibility;
     } else {
@@ -336,6 +338,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
     const double raster_share = thread_ns > 0.0 ? static_cast<double>(times.raster_ns.load()) / thread_ns : 1.0;
     stats.ms_raster = interleaved_ms * raster_share;
     stats.ms_shade = interleaved_ms - stats.ms_raster;
+    composite_transparency_timed(scene, front, shader, resolve, result);
     stats.ms_total = milliseconds_since(start);
 }
 

@@ -59,6 +59,7 @@ struct Material {
     glm::vec3 diffuse{0.7f};
     glm::vec3 specular{0.2f};
     float exponent = 32.0f;
+    float opacity = 1.0f;  // 1 opaque; below 1 the surface is blended over what lies behind it (README "Transparency")
     std::optional<TextureBinding> texture;  // none for an untextured material: no texture memory, no texture work
     std::string name;                       // the MTL or scene name, for messages; may be empty
 };

@@ -61,6 +61,22 @@ bool has_shadows(const Scene& scene) {
     return std::any_of(scene.lights.begin(), scene.lights.end(), [](const Light& light) { return light.shadows; });
 }
 
+bool has_transparency(const Scene& scene) {
+    bool transparent = false;
+    for (const SceneMesh& mesh : scene.meshes)
+        for_each_material(mesh, [&](const Material& material) { transparent = transparent || material.opacity < 1.0f; });
+    return transparent;
+}
+
+const char* to_string(TransparencyMode mode) { return mode == TransparencyMode::sorted ? "sorted" : "weighted"; }
+
+bool parse_transparency_mode(const std::string& name, TransparencyMode& out) {
+    if (name == "sorted") out = TransparencyMode::sorted;
+    else if (name == "weighted") out = TransparencyMode::weighted;
+    else return false;
+    return true;
+}
+
 size_t triangle_count(const Scene& scene) {
     size_t total = 0;
     for (const auto& mesh : scene.meshes) total += mesh.data.triangles.size();

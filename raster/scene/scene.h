@@ -1,6 +1,7 @@
 // The scene every loader produces and every renderer reads: camera, settings, lights, meshes and materials.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -94,6 +95,19 @@ struct ShadowSettings {
 inline constexpr int kMinShadowResolution = 16;
 inline constexpr int kMaxShadowResolution = 8192;
 
+// How transparent surfaces are composited (README "Transparency"): `sorted` keeps every fragment of a sample in an
+// A-buffer, sorts them by depth and composites front to back (exact, with a memory cap); `weighted` accumulates
+// them in any order into a weighted average (Bavoil and Myers 2008): no lists and no sort, exact for one layer and
+// for layers of one colour, approximate otherwise.
+enum class TransparencyMode { sorted, weighted };
+struct TransparencySettings {
+    TransparencyMode mode = TransparencyMode::sorted;
+    int64_t max_fragments = int64_t{1} << 24;  // sorted: the A-buffer's cap, kMinFragments..kMaxFragments
+};
+inline constexpr int64_t kMinFragments = 1;
+inline constexpr int64_t kMaxFragments = int64_t{1} << 27;
+inline constexpr int kFragmentBytes = 24;  // an A-buffer entry: triangle, barycentrics, depth, next
+
 // How to render: everything a command-line flag can override.
 struct RenderSettings {
     int width = 640;
@@ -113,6 +127,7 @@ struct RenderSettings {
     // must be built (build_needed_mip_chains) before rendering.
     std::optional<TextureFilter> texture_filter;
     ShadowSettings shadows;  // read only when a light casts shadows
+    TransparencySettings transparency;  // read only when a material's opacity is below 1
 };
 
 struct Scene {
@@ -128,6 +143,12 @@ bool has_textures(const Scene& scene);
 
 // Whether any light casts shadows: the only scenes that build shadow maps.
 bool has_shadows(const Scene& scene);
+
+// Whether any material has an opacity below 1: the only scenes with a transparency pass.
+bool has_transparency(const Scene& scene);
+
+const char* to_string(TransparencyMode mode);
+bool parse_transparency_mode(const std::string& name, TransparencyMode& out);
 
 const char* to_string(ShadingMode mode);
 const char* to_string(SamplePattern pattern);

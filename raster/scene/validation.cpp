@@ -45,6 +45,9 @@ std::string settings_problem(const RenderSettings& s) {
     if (s.snap_bits < kMinSnapBits || s.snap_bits > kMaxSnapBits)
         return "snap bits must be " + std::to_string(kMinSnapBits) + ".." + std::to_string(kMaxSnapBits);
     if (!finite3(s.background) || !finite3(s.ambient_light)) return "background and ambient light must be finite";
+    if (s.transparency.max_fragments < kMinFragments || s.transparency.max_fragments > kMaxFragments)
+        return "transparency max_fragments must be " + std::to_string(kMinFragments) + ".." +
+               std::to_string(kMaxFragments) + ", got " + std::to_string(s.transparency.max_fragments);
     return shadow_settings_problem(s.shadows);
 }
 
@@ -136,6 +139,10 @@ void validate_scene(const Scene& scene) {
         if (!std::isfinite(mesh.material.exponent) || !finite3(mesh.material.ambient) ||
             !finite3(mesh.material.diffuse) || !finite3(mesh.material.specular) || !finite3(mesh.material.color))
             fail(mesh.source + ": material values must be finite");
+        for_each_material(mesh, [&](const Material& material) {
+            if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
+                fail(mesh.source + ": material opacity must be in [0, 1], got " + std::to_string(material.opacity));
+        });
     }
 }
 
