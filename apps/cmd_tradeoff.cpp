@@ -7,7 +7,6 @@
 #include "apps/command.h"
 #include "apps/progress_bar.h"
 #include "oracle/reference/embree_device.h"
-#include "harness/comparison/scene_comparison.h"
 #include "harness/tradeoff/pareto_plot.h"
 #include "harness/tradeoff/tradeoff.h"
 #include "harness/tradeoff/tradeoff_modes.h"
@@ -139,8 +138,6 @@ int run_tradeoff(const TradeoffFlags& flags, std::ostream& out, std::ostream& er
             Scene scene = load_scene(file);
             if (std::string problem = harness::reference_problem(scene.settings, flags.reference_grid); !problem.empty())
                 throw InputError(file, 0, 0, problem);
-            if (has_transparency(scene))  // every mode is compared against the oracle
-                throw InputError(file, 0, 0, harness::comparison_problem(scene));
             modes.push_back(modes_for(flags, scene, err));
             scenes.push_back(std::move(scene));
         }

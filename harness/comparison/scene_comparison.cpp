@@ -11,6 +11,7 @@
 #include "oracle/reference/sample_positions.h"
 #include "oracle/reference/scene_geometry.h"
 #include "oracle/reference/shader.h"
+#include "oracle/reference/layer_caster.h"
 #include "oracle/reference/shadow_oracle.h"
 #include "raster/core/stopwatch.h"
 #include "raster/scene/validation.h"
@@ -30,9 +31,6 @@ uint64_t comparison_bytes(const RenderSettings& settings) {
 }
 
 std::string comparison_problem(const Scene& scene) {
-    if (has_transparency(scene))
-        return "the oracle does not model transparency yet (README \"Transparency\"): a material with opacity below 1 "
-               "cannot be compared";
     const RenderSettings& settings = scene.settings;
     const uint64_t bytes = comparison_bytes(settings);
     if (bytes <= kMaxFrameBytes) return "";
@@ -69,7 +67,11 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
     const oracle::OracleShader shader(scene, geometry, shadows.get(), oracle::ShadowAnswer::exact);
     const oracle::ResolveSettings resolve{scene.settings.samples, scene.settings.msaa, options.alpha,
                                           glm::dvec3(scene.settings.background)};
-    const oracle::OracleImage oracle_image = oracle::render_image(shader, out.oracle_visibility, resolve, options.threads);
+    const oracle::SampleLayers layers = oracle::trace_layers(scene, geometry, oracle_options);
+    const bool transparent = !layers.first.empty();
+    const TransparencyMode transparency = scene.settings.transparency.mode;
+    const oracle::OracleImage oracle_image = oracle::render_image(shader, out.oracle_visibility, resolve, options.threads,
+                                                                  transparent ? &layers : nullptr, transparency);
     out.oracle_image = image_of(oracle_image);
     out.oracle_ms = milliseconds_since(start);
 
@@ -99,6 +101,21 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
     colour.resolve = resolve;
     colour.offsets = offsets;
     colour.threads = options.threads;
+    oracle::LayerVerdicts layer_verdicts;
+    if (transparent) {
+        oracle::LayerCheckInputs layer_inputs;
+        layer_inputs.scene = &scene;
+        layer_inputs.layers = &layers;
+        layer_inputs.oracle = &out.oracle_visibility;
+        layer_inputs.reference = &reference;
+        layer_inputs.transparent = oracle::traced_triangles(scene, geometry, oracle::Surfaces::transparent);
+        layer_inputs.offsets = offsets;
+        layer_inputs.threads = options.threads;
+        layer_verdicts = oracle::check_layers(layer_inputs);
+        colour.layers = &layers;
+        colour.layer_verdicts = &layer_verdicts;
+        colour.transparency = transparency;
+    }
     const oracle::PixelBounds bounds = oracle::pixel_bounds(colour);
     const Image png = encoded_and_decoded(out.raster.image, ImageFormat::png);
     const Image ppm = encoded_and_decoded(out.raster.image, ImageFormat::ppm);
@@ -112,8 +129,17 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
         // A shadow disagreement when every file that is off is off only by its shadows.
         const bool png_other = out.png.genuine_pixels[i] && !out.png.shadow_pixels[i];
         const bool ppm_other = out.ppm.genuine_pixels[i] && !out.ppm.shadow_pixels[i];
-        out.shadow_genuine[i] = out.colour_genuine[i] && !png_other && !ppm_other;
+        // A pixel with transparent layers is a transparency disagreement first: its layers' shading includes the
+        // shadows, so leaving shadows open there would excuse a wrong blend as well.
+        const bool layered = !bounds.layered.empty() && bounds.layered[i];
+        out.transparency_genuine_pixels += out.colour_genuine[i] && layered;
+        out.shadow_genuine[i] = out.colour_genuine[i] && !layered && !png_other && !ppm_other;
         out.shadow_genuine_pixels += out.shadow_genuine[i];
+    }
+    for (oracle::LayerOpen open : bounds.layer_open) {
+        out.transparency_edge_pixels += open == oracle::LayerOpen::edge;
+        out.transparency_depth_pixels += open == oracle::LayerOpen::depth;
+        out.transparency_order_pixels += open == oracle::LayerOpen::order;
     }
     using oracle::ShadowVerdict;
     out.shadow_seen = bounds.shadow_seen;
@@ -176,13 +202,18 @@ nlohmann::json comparison_json(const Comparison& c) {
              {{"visibility", count(SampleClass::visibility)},
               {"barycentrics", count(SampleClass::barycentrics)},
               {"depth", count(SampleClass::depth)},
-              {"color", c.colour_genuine_pixels - c.shadow_genuine_pixels},
-              {"shadow", c.shadow_genuine_pixels}}},
+              {"color", c.colour_genuine_pixels - c.shadow_genuine_pixels - c.transparency_genuine_pixels},
+              {"shadow", c.shadow_genuine_pixels},
+              {"transparency", c.transparency_genuine_pixels}}},
             {"genuine_total", c.genuine_total()},
             {"shadows",
              {{"edge", c.shadow_edge_pixels},
               {"depth", c.shadow_depth_pixels},
               {"inconsistent", c.shadow_inconsistent_pixels}}},
+            {"transparency",
+             {{"edge", c.transparency_edge_pixels},
+              {"depth", c.transparency_depth_pixels},
+              {"order", c.transparency_order_pixels}}},
             {"pixels",
              {{"judged", c.png.judged},
               {"ambiguous", c.png.ambiguous},
@@ -208,6 +239,7 @@ std::string comparison_summary(const Comparison& c) {
                   "  samples genuine    %llu (visibility %llu, barycentrics %llu, depth %llu)\n"
                   "  pixels judged      %llu, ambiguous %llu, colour genuine %llu (png %llu, ppm %llu), of them shadow %llu\n"
                   "  shadow model open  %llu pixels by an edge, %llu by depth, %llu inconsistent\n"
+                  "  layers open        %llu pixels by an edge, %llu by depth, %llu by order; transparency genuine %llu\n"
                   "  genuine total      %llu\n"
                   "  max colour difference from the oracle's image %d/255 on judged pixels\n"
                   "  raster %.1f ms, oracle %.1f ms, compare %.1f ms\n",
@@ -222,6 +254,10 @@ std::string comparison_summary(const Comparison& c) {
                   static_cast<unsigned long long>(c.shadow_edge_pixels),
                   static_cast<unsigned long long>(c.shadow_depth_pixels),
                   static_cast<unsigned long long>(c.shadow_inconsistent_pixels),
+                  static_cast<unsigned long long>(c.transparency_edge_pixels),
+                  static_cast<unsigned long long>(c.transparency_depth_pixels),
+                  static_cast<unsigned long long>(c.transparency_order_pixels),
+                  static_cast<unsigned long long>(c.transparency_genuine_pixels),
                   static_cast<unsigned long long>(c.genuine_total()),
                   std::max(c.png.max_difference, c.ppm.max_difference), c.raster_ms, c.oracle_ms, c.compare_ms);
     return text;
@@ -234,8 +270,9 @@ std::string genuine_reasons(const Comparison& c) {
     };
     for (oracle::SampleClass k : {oracle::SampleClass::visibility, oracle::SampleClass::barycentrics, oracle::SampleClass::depth})
         add(oracle::to_string(k), c.visibility.counts.count(k));
-    add("color", c.colour_genuine_pixels - c.shadow_genuine_pixels);
+    add("color", c.colour_genuine_pixels - c.shadow_genuine_pixels - c.transparency_genuine_pixels);
     add("shadow", c.shadow_genuine_pixels);
+    add("transparency", c.transparency_genuine_pixels);
     return text.empty() ? "-" : text;
 }
 

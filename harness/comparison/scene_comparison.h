@@ -44,6 +44,12 @@ struct Comparison {
     std::vector<uint8_t> shadow_seen;         // per judged pixel: the shadow verdicts met (ShadowTally bits)
     uint64_t shadow_genuine_pixels = 0;
     uint64_t shadow_edge_pixels = 0, shadow_depth_pixels = 0, shadow_inconsistent_pixels = 0;
+    // With transparency: of the genuine colour pixels, how many composite transparent layers (never counted as a
+    // shadow's);
+    // and how many pixels the layers left open (ambiguous) by a layer's edge, a layer's depth against the opaque
+    // surface's, or two layers' order.
+    uint64_t transparency_genuine_pixels = 0;
+    uint64_t transparency_edge_pixels = 0, transparency_depth_pixels = 0, transparency_order_pixels = 0;
     double raster_ms = 0;   // raster's in-process frame time (RenderStats::ms_total)
     double oracle_ms = 0;   // the oracle: geometry, BVH build, one ray per sample, shading and resolve
     double compare_ms = 0;  // reference geometry, classification, colour bounds and checks
@@ -56,8 +62,7 @@ struct Comparison {
 // sample), the oracle's sample buffer (20) and the classes (1) per sample; per pixel the images, the decoded files
 // and the colour bounds (about 50). compare_scene refuses frames above kMaxFrameBytes (comparison_problem).
 uint64_t comparison_bytes(const RenderSettings& settings);
-// Empty when the scene can be compared: no transparency (the oracle does not model it yet) and a frame that fits
-// the cap; else what is wrong.
+// Empty when a comparison of the scene fits the cap, else what is wrong.
 std::string comparison_problem(const Scene& scene);
 
 // Renders and compares. `stages` are raster's (a test passes a mutant's); the oracle has none of them. The scene

@@ -12,6 +12,7 @@
 
 #include "harness/comparison/decoded_image.h"
 #include "harness/comparison/scene_comparison.h"
+#include "oracle/reference/layer_caster.h"
 #include "oracle/reference/oracle_image.h"
 #include "oracle/reference/reference_geometry.h"
 #include "oracle/reference/scene_geometry.h"
@@ -165,7 +166,9 @@ Image reference_image(const Scene& scene, int grid, const TradeoffOptions& optio
     const oracle::OracleShader shader(reference, geometry, shadows.get(), oracle::ShadowAnswer::exact);
     const oracle::ResolveSettings resolve{reference.settings.samples, false, false,
                                           glm::dvec3(reference.settings.background)};
-    return image_of(oracle::render_image(shader, visibility, resolve, options.threads));
+    const oracle::SampleLayers layers = oracle::trace_layers(reference, geometry, oracle_options);
+    return image_of(oracle::render_image(shader, visibility, resolve, options.threads,
+                                         layers.first.empty() ? nullptr : &layers, TransparencyMode::sorted));  // exact, whatever the mode
 }
 
 std::vector<bool> pareto_front(const std::vector<std::pair<double, double>>& points) {

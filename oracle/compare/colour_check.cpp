@@ -8,6 +8,36 @@
 #include "raster/core/parallel.h"
 
 namespace raster::oracle {
+namespace {
+
+// The pixel's samples with the layers raster must composite in front of each (barycentric boxes widened by their
+// tolerance, as the opaque samples' are); `open` gets the first reason a sample's layers are left open. True when
+// some sample has a layer to composite.
+bool gather_layers(const ColourInputs& in, int px, int py, const std::vector<ResolveSample>& box,
+                   std::vector<LayeredSample>& layered, LayerOpen& open) {
+    const SampleLayers& layers = *in.layers;
+    const LayerVerdicts& verdicts = *in.layer_verdicts;
+    bool any = false;
+    for (size_t s = 0; s < box.size(); ++s) {
+        const size_t at = in.oracle->index(px, py, static_cast<int>(s));
+        layered[s].opaque = box[s];
+        layered[s].layers.clear();
+        if (open == LayerOpen::none) open = verdicts.open[at];
+        const glm::dvec2 screen = glm::dvec2(px, py) + in.offsets[s];
+        for (size_t h = 0; h < layers.count(at); ++h) {
+            if (!verdicts.in_front[layers.first[at] + h]) continue;
+            const LayerHit& hit = layers.of(at)[h];
+            ResolveSample sample{hit.triangle, Interval3(glm::dvec3(hit.bary))};
+            const glm::dvec3 tolerance = barycentric_tolerance(*in.reference, hit.triangle, screen);
+            for (int k = 0; k < 3; ++k) sample.bary[k] = sample.bary[k].widened(tolerance[k]);
+            layered[s].layers.push_back(sample);
+            any = true;
+        }
+    }
+    return any;
+}
+
+}  // namespace
 
 PixelBounds pixel_bounds(const ColourInputs& in) {
     const SampleBuffer& oracle = *in.oracle;
@@ -23,9 +53,14 @@ PixelBounds pixel_bounds(const ColourInputs& in) {
         out.shadow_seen.assign(pixels, 0);
         out.open_ranges.assign(pixels * out.channels, ByteRange{0, 255});
     }
+    if (in.layers) {
+        out.layered.assign(pixels, 0);
+        out.layer_open.assign(pixels, LayerOpen::none);
+    }
     parallel_for(static_cast<size_t>(out.height), in.threads, [&](size_t row) {
         const int py = static_cast<int>(row);
         std::vector<ResolveSample> box(static_cast<size_t>(samples));
+        std::vector<LayeredSample> layered(static_cast<size_t>(samples));
         for (int px = 0; px < out.width; ++px) {
             const size_t pixel = static_cast<size_t>(py) * out.width + px;
             bool genuine = false, ambiguous = false;
@@ -41,14 +76,21 @@ PixelBounds pixel_bounds(const ColourInputs& in) {
                 const glm::dvec3 tolerance = barycentric_tolerance(*in.reference, id, screen);
                 for (int k = 0; k < 3; ++k) box[s].bary[k] = box[s].bary[k].widened(tolerance[k]);
             }
+            const bool has_layers = in.layers && gather_layers(in, px, py, box, layered, out.layer_open[pixel]);
+            if (has_layers) out.layered[pixel] = 1;
+            if (!genuine && !ambiguous && in.layers && out.layer_open[pixel] != LayerOpen::none) ambiguous = true;
             out.state[pixel] = genuine ? PixelState::genuine : ambiguous ? PixelState::ambiguous : PixelState::judged;
             if (out.state[pixel] != PixelState::judged) continue;
+            auto resolve_with = [&](const OracleShader& shader, ShadowTally* tally) {
+                return has_layers ? resolve_layered_pixel(shader, in.resolve, in.transparency, layered.data(), tally)
+                                  : resolve_pixel(shader, in.resolve, box.data(), tally);
+            };
             ShadowTally tally;
-            const PixelColour allowed = resolve_pixel(*in.shader, in.resolve, box.data(), &tally);
+            const PixelColour allowed = resolve_with(*in.shader, &tally);
             for (int c = 0; c < out.channels; ++c) out.ranges[pixel * out.channels + c] = byte_range(allowed.channel[c]);
             if (!in.open_shader || tally.seen == 0) continue;  // no light with shadows reaches the pixel
             out.shadow_seen[pixel] = tally.seen;
-            const PixelColour open = resolve_pixel(*in.open_shader, in.resolve, box.data());
+            const PixelColour open = resolve_with(*in.open_shader, nullptr);
             for (int c = 0; c < out.channels; ++c) out.open_ranges[pixel * out.channels + c] = byte_range(open.channel[c]);
         }
     });

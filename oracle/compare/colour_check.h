@@ -8,8 +8,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "oracle/compare/layer_check.h"
 #include "oracle/compare/raster_output.h"
 #include "oracle/compare/sample_classifier.h"
+#include "oracle/reference/layer_resolve.h"
 #include "oracle/reference/oracle_image.h"
 #include "oracle/reference/pixel_resolve.h"
 #include "oracle/reference/shading_precision.h"
@@ -31,6 +33,10 @@ struct PixelBounds {
     // pixel outside `ranges` but inside these is told apart as a shadow disagreement. Empty without shadows.
     std::vector<uint8_t> shadow_seen;
     std::vector<ByteRange> open_ranges;  // per pixel and channel; {0, 255} where no light with shadows reaches
+    // With transparency (layers given): per pixel, 1 where raster must composite some layer there, and why the
+    // layers leave the pixel open (LayerOpen, none where they do not; such a pixel is ambiguous). Empty without.
+    std::vector<uint8_t> layered;
+    std::vector<LayerOpen> layer_open;
 };
 
 struct ColourInputs {
@@ -42,6 +48,10 @@ struct ColourInputs {
     ResolveSettings resolve;
     std::vector<glm::dvec2> offsets;  // the sample positions inside a pixel
     int threads = 0;
+    // With transparency: the oracle's layers and their verdicts, and raster's compositing mode.
+    const SampleLayers* layers = nullptr;
+    const LayerVerdicts* layer_verdicts = nullptr;
+    TransparencyMode transparency = TransparencyMode::sorted;
 };
 
 // For every pixel whose samples all agree, the bytes raster may write. Deterministic for any thread count.

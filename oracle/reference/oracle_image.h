@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "oracle/reference/layer_caster.h"
+#include "oracle/reference/layer_resolve.h"
 #include "oracle/reference/pixel_resolve.h"
 #include "oracle/reference/sample_buffer.h"
 #include "oracle/reference/shader.h"
@@ -16,8 +18,10 @@ struct OracleImage {
     std::vector<uint8_t> pixels;  // row-major, top row first
 };
 
-// Deterministic for any thread count.
+// With `layers` (a scene with transparency), each sample's hits nearer than its opaque surface are composited
+// over it in `mode` (layer_resolve.h). Deterministic for any thread count.
 OracleImage render_image(const OracleShader& shader, const SampleBuffer& visibility, const ResolveSettings& settings,
-                         int threads);
+                         int threads, const SampleLayers* layers = nullptr,
+                         TransparencyMode mode = TransparencyMode::sorted);
 
 }  // namespace raster::oracle

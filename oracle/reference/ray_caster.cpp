@@ -29,17 +29,58 @@ bool faces_eye(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
     return glm::dot(glm::cross(b - a, c - a), a) < 0.0;
 }
 
-// Owns an RTCScene.
-struct SceneHandle {
-    RTCScene scene = nullptr;
-    ~SceneHandle() {
-        if (scene) rtcReleaseScene(scene);
-    }
-};
-
 }  // namespace
 
 const char* to_string(OracleMode mode) { return mode == OracleMode::robust ? "robust" : "fast"; }
+
+std::vector<uint32_t> traced_triangles(const Scene& scene, const OracleScene& geometry, Surfaces surfaces) {
+    std::vector<uint32_t> out;
+    out.reserve(geometry.triangles.size());
+    for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
+        const auto& v = geometry.triangles[id].vertex;
+        const bool transparent = triangle_material(scene, geometry.triangles[id]).opacity < 1.0f;
+        if (transparent != (surfaces == Surfaces::transparent)) continue;
+        if (!finite(glm::vec3(geometry.view[v[0]])) || !finite(glm::vec3(geometry.view[v[1]])) ||
+            !finite(glm::vec3(geometry.view[v[2]])))
+            continue;
+        if (scene.settings.cull_backfaces && !faces_eye(geometry.view[v[0]], geometry.view[v[1]], geometry.view[v[2]]))
+            continue;
+        out.push_back(id);
+    }
+    return out;
+}
+
+ViewScene::ViewScene(EmbreeDevice& device, const OracleScene& geometry, std::vector<uint32_t> triangles,
+                     OracleMode mode, RTCFilterFunctionN filter)
+    : triangles_(std::move(triangles)) {
+    scene_ = rtcNewScene(device.get());
+    device.check("rtcNewScene");
+    rtcSetSceneFlags(scene_, mode == OracleMode::robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
+    if (!triangles_.empty()) {
+        RTCGeometry mesh = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+        device.check("rtcNewGeometry");
+        auto* vertex_buffer = static_cast<float*>(rtcSetNewGeometryBuffer(
+            mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), geometry.view.size()));
+        auto* index_buffer = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles_.size()));
+        device.check("rtcSetNewGeometryBuffer");
+        for (size_t i = 0; i < geometry.view.size(); ++i)
+            for (int k = 0; k < 3; ++k) vertex_buffer[3 * i + k] = static_cast<float>(geometry.view[i][k]);
+        for (size_t i = 0; i < triangles_.size(); ++i)
+            for (int k = 0; k < 3; ++k) index_buffer[3 * i + k] = geometry.triangles[triangles_[i]].vertex[k];
+        if (filter) rtcSetGeometryIntersectFilterFunction(mesh, filter);
+        rtcCommitGeometry(mesh);
+        rtcAttachGeometry(scene_, mesh);
+        rtcReleaseGeometry(mesh);
+        device.check("attaching the triangle geometry");
+    }
+    rtcCommitScene(scene_);
+    device.check("rtcCommitScene (BVH build)");
+}
+
+ViewScene::~ViewScene() {
+    if (scene_) rtcReleaseScene(scene_);
+}
 
 OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const OracleOptions& options,
                           SampleBuffer& out) {
@@ -49,42 +90,8 @@ OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const
 
     auto start = Clock::now();
     EmbreeDevice& device = embree_device_for(threads);
-    std::vector<glm::vec3> vertices(geometry.view.size());
-    for (size_t i = 0; i < vertices.size(); ++i) vertices[i] = glm::vec3(geometry.view[i]);
-    std::vector<uint32_t> scene_triangle;  // Embree primitive id -> scene triangle id
-    scene_triangle.reserve(geometry.triangles.size());
-    for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
-        const auto& v = geometry.triangles[id].vertex;
-        if (!finite(vertices[v[0]]) || !finite(vertices[v[1]]) || !finite(vertices[v[2]])) continue;
-        if (settings.cull_backfaces && !faces_eye(geometry.view[v[0]], geometry.view[v[1]], geometry.view[v[2]]))
-            continue;
-        scene_triangle.push_back(id);
-    }
-    stats.triangles = scene_triangle.size();
-
-    SceneHandle handle;
-    handle.scene = rtcNewScene(device.get());
-    device.check("rtcNewScene");
-    rtcSetSceneFlags(handle.scene, options.mode == OracleMode::robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
-    if (!scene_triangle.empty()) {
-        RTCGeometry mesh = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-        device.check("rtcNewGeometry");
-        auto* vertex_buffer = static_cast<float*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
-        auto* index_buffer = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), scene_triangle.size()));
-        device.check("rtcSetNewGeometryBuffer");
-        for (size_t i = 0; i < vertices.size(); ++i)
-            for (int k = 0; k < 3; ++k) vertex_buffer[3 * i + k] = vertices[i][k];
-        for (size_t i = 0; i < scene_triangle.size(); ++i)
-            for (int k = 0; k < 3; ++k) index_buffer[3 * i + k] = geometry.triangles[scene_triangle[i]].vertex[k];
-        rtcCommitGeometry(mesh);
-        rtcAttachGeometry(handle.scene, mesh);
-        rtcReleaseGeometry(mesh);
-        device.check("attaching the triangle geometry");
-    }
-    rtcCommitScene(handle.scene);
-    device.check("rtcCommitScene (BVH build)");
+    const ViewScene view(device, geometry, traced_triangles(scene, geometry, Surfaces::opaque), options.mode);
+    stats.triangles = view.size();
     stats.ms_build = milliseconds_since(start);
 
     start = Clock::now();
@@ -124,12 +131,12 @@ OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const
                 packet.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
                 packet.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
             }
-            rtcIntersect8(valid, handle.scene, &context, &packet);
+            rtcIntersect8(valid, view.get(), &context, &packet);
             for (size_t k = 0; k < count; ++k) {
                 const size_t at = row_first + begin + k;
                 if (packet.hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) continue;  // resize left it empty
                 const float u = packet.hit.u[k], v = packet.hit.v[k];
-                out.triangle[at] = scene_triangle[packet.hit.primID[k]];
+                out.triangle[at] = view.scene_triangle(packet.hit.primID[k]);
                 out.bary[at] = glm::vec3(1.0f - u - v, u, v);
                 out.view_depth[at] = packet.ray.tfar[k];
             }

@@ -4,7 +4,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
+#include "oracle/reference/embree_device.h"
 #include "oracle/reference/sample_buffer.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/scene/scene.h"
@@ -27,13 +30,40 @@ struct OracleStats {
     double ms_trace = 0;   // one ray per sample
 };
 
-// Renders the visibility of `scene` into `out` (resized to width x height x samples):
+// Which surfaces a caster traces: the opaque ones (render_oracle: what the depth test keeps) or the transparent
+// ones (layer_caster.h: every hit along the ray), by each triangle's material opacity as the oracle reads it.
+enum class Surfaces { opaque, transparent };
+
+// The scene triangles a caster hands Embree: those of `surfaces`, with finite view-space vertices and, when the
+// scene culls back faces, facing the eye (front = counter-clockwise in NDC, decided exactly from the view-space
+// vertices).
+std::vector<uint32_t> traced_triangles(const Scene& scene, const OracleScene& geometry, Surfaces surfaces);
+
+// An Embree scene of some scene triangles in view space (vertices rounded to float), robust unless `mode` is fast;
+// `filter`, when given, is every hit's intersection filter. Throws OracleError when Embree fails.
+class ViewScene {
+public:
+    ViewScene(EmbreeDevice& device, const OracleScene& geometry, std::vector<uint32_t> triangles, OracleMode mode,
+              RTCFilterFunctionN filter = nullptr);
+    ~ViewScene();
+    ViewScene(const ViewScene&) = delete;
+    ViewScene& operator=(const ViewScene&) = delete;
+    RTCScene get() const { return scene_; }
+    // The scene triangle of an Embree primitive id.
+    uint32_t scene_triangle(unsigned primitive) const { return triangles_[primitive]; }
+    size_t size() const { return triangles_.size(); }
+
+private:
+    RTCScene scene_ = nullptr;
+    std::vector<uint32_t> triangles_;
+};
+
+// Renders the visibility of `scene`'s opaque surfaces into `out` (resized to width x height x samples):
 // - rays start at the eye and run through each sample's screen position, in view space with direction z = -1, so
 //   t is the view depth and the t-range [near, far] clips exactly as the near and far planes do;
 // - triangles are geometry's view-space vertices rounded to float, with their scene ids;
 // - barycentrics are Embree's (1 - u - v, u, v) w.r.t. the original vertices, view depth is the hit's t.
-// With back-face culling the triangles facing away from the eye are left out (front = counter-clockwise in NDC,
-// decided exactly from the view-space vertices). Throws OracleError when Embree fails. The result does not depend
+// Transparent surfaces are not traced here (layer_caster.h). Throws OracleError when Embree fails. The result does not depend
 // on the thread count.
 OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const OracleOptions& options,
                           SampleBuffer& out);

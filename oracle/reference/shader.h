@@ -55,6 +55,8 @@ public:
     // Linear RGB of triangle `id` for every barycentric triple in `bary`, unclamped; `tally` (optional) gets the
     // shadow verdicts met.
     Interval3 shade(uint32_t id, const Interval3& bary, ShadowTally* tally = nullptr) const;
+    // The opacity of triangle `id`'s material, as the scene stores it.
+    double opacity(uint32_t id) const { return material_of(id).opacity; }
 
 private:
     struct LitTerms {

@@ -111,7 +111,8 @@ bool polygon_meets(const std::span<const glm::dvec2>& v, const TexelRect& r) {
 
 }  // namespace
 
-std::vector<uint8_t> boundary_edges(const Scene& scene, const OracleScene& geometry, const glm::dvec3& light) {
+std::vector<uint8_t> boundary_edges(const Scene& scene, const OracleScene& geometry, const glm::dvec3& light,
+                                    const std::vector<uint8_t>& casts) {
     const std::vector<uint32_t> canonical = welded_vertices(scene, geometry);
     std::vector<uint8_t> boundary(geometry.triangles.size(), 0x7);
     struct Use {
@@ -120,6 +121,7 @@ std::vector<uint8_t> boundary_edges(const Scene& scene, const OracleScene& geome
     };
     std::unordered_map<uint64_t, std::vector<Use>> uses;
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
+        if (!casts[id]) continue;  // a surface that casts no shadow leaves its neighbours' edges open
         const auto& v = geometry.triangles[id].vertex;
         const uint32_t c[3] = {canonical[v[0]], canonical[v[1]], canonical[v[2]]};
         if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2]) continue;  // degenerate: every edge a boundary
@@ -197,7 +199,7 @@ ShadowIndex::ShadowIndex(const Scene& scene, const OracleScene& geometry, size_t
                          const std::vector<uint8_t>& casts) {
     const glm::vec3 position = scene.lights[light].position;
     planes_ = shadow_planes(geometry.world, position);
-    const std::vector<uint8_t> triangle_boundary = boundary_edges(scene, geometry, glm::dvec3(position));
+    const std::vector<uint8_t> triangle_boundary = boundary_edges(scene, geometry, glm::dvec3(position), casts);
     const int n = scene.settings.shadows.resolution;
     for (int face = 0; face < kShadowFaces; ++face) {
         auto f = std::make_unique<Face>();

@@ -63,7 +63,9 @@ private:
 // exactly two triangles of the same mesh share it (their vertices at the same positions: raster's map is
 // watertight there) and they lie on opposite sides of the plane through the light and the edge (both face the
 // light the same way); every other edge (a silhouette, an open or non-manifold edge, a degenerate triangle's) is a
-// boundary. Bit k of entry t: the edge from vertex k to vertex k + 1 of triangle t is a boundary.
-std::vector<uint8_t> boundary_edges(const Scene& scene, const OracleScene& geometry, const glm::dvec3& light);
+// boundary. Only triangles with `casts` set count (a shared edge with one that casts no shadow is a boundary).
+// Bit k of entry t: the edge from vertex k to vertex k + 1 of triangle t is a boundary.
+std::vector<uint8_t> boundary_edges(const Scene& scene, const OracleScene& geometry, const glm::dvec3& light,
+                                    const std::vector<uint8_t>& casts);
 
 }  // namespace raster::oracle

@@ -74,6 +74,12 @@ TEST_P(CorpusAgainstOracle, hasNoGenuineDisagreement) {
     EXPECT_LE(comparison.shadow_edge_pixels + comparison.shadow_depth_pixels,
               uint64_t(comparison.width) * comparison.height / 50)
         << harness::comparison_summary(comparison);
+    // The transparent layers leave at most 1% of the pixels open: only along a layer's edges (a sample within the
+    // snap radius of one) and where a layer meets a surface (a depth within the bounds).
+    EXPECT_LE(comparison.transparency_edge_pixels + comparison.transparency_depth_pixels +
+                  comparison.transparency_order_pixels,
+              uint64_t(comparison.width) * comparison.height / 100)
+        << harness::comparison_summary(comparison);
 }
 
 std::string case_name(const ::testing::TestParamInfo<CorpusCase>& info) {

@@ -206,7 +206,8 @@ TEST(BoundaryEdges, areTheSilhouettesAndOpenEdgesSeenFromTheLight) {
     scene.meshes.push_back(cube);
     scene.settings.shading = ShadingMode::blinn_phong;
     const OracleScene geometry = oracle_scene(scene);
-    const std::vector<uint8_t> boundary = boundary_edges(scene, geometry, {0.5, 5.0, 0.3});  // sees the top only
+    const std::vector<uint8_t> boundary = boundary_edges(scene, geometry, {0.5, 5.0, 0.3},
+                                                          std::vector<uint8_t>(geometry.triangles.size(), 1));  // sees the top only
     int boundary_count = 0;
     for (uint8_t bits : boundary) boundary_count += __builtin_popcount(bits);
     // The light sees the top face (y = +1) alone: its 4 outer edges are the silhouette, counted once in the top

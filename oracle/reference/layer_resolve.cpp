@@ -1,0 +1,105 @@
+// The layered resolve: per sample a composite of interval colours, the pixel the mean of its samples.
+#include "oracle/reference/layer_resolve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "oracle/reference/precision.h"
+#include "raster/core/conventions.h"
+
+namespace raster::oracle {
+namespace {
+
+// MSAA: each triangle shaded once, at the first sample that shows it.
+class ShadeOnce {
+public:
+    ShadeOnce(const OracleShader& shader, bool msaa, ShadowTally* tally) : shader_(shader), msaa_(msaa), tally_(tally) {}
+    Interval3 shade(const ResolveSample& sample) {
+        if (!msaa_) return shader_.shade(sample.triangle, sample.bary, tally_);
+        for (const auto& [id, colour] : shaded_)
+            if (id == sample.triangle) return colour;
+        shaded_.emplace_back(sample.triangle, shader_.shade(sample.triangle, sample.bary, tally_));
+        return shaded_.back().second;
+    }
+
+private:
+    const OracleShader& shader_;
+    bool msaa_;
+    ShadowTally* tally_;
+    std::vector<std::pair<uint32_t, Interval3>> shaded_;
+};
+
+struct SampleBlend {
+    Interval3 colour;  // premultiplied
+    Interval alpha;
+};
+
+SampleBlend blend(const OracleShader& shader, TransparencyMode mode, const LayeredSample& sample, ShadeOnce& shade) {
+    Interval3 colour(glm::dvec3(0.0)), weighted(glm::dvec3(0.0));
+    Interval transmittance(1.0);
+    double alpha_sum = 0.0, largest = 0.0;
+    for (const ResolveSample& layer : sample.layers) {
+        const double a = shader.opacity(layer.triangle);
+        const Interval3 c = shade.shade(layer);
+        largest = std::max(largest, c.magnitude());
+        colour = colour + (transmittance * Interval(a)) * c;
+        weighted = weighted + Interval(a) * c;
+        alpha_sum += a;
+        transmittance = transmittance * Interval(1.0 - a);
+    }
+    if (mode == TransparencyMode::weighted)
+        colour = alpha_sum > 0.0 ? (Interval(1.0) - transmittance) * (Interval(1.0 / alpha_sum) * weighted)
+                                 : Interval3(glm::dvec3(0.0));
+    SampleBlend out{colour, Interval(1.0) - transmittance};
+    if (sample.opaque.triangle != kNoTriangle) {
+        const Interval3 c = shade.shade(sample.opaque);
+        largest = std::max(largest, c.magnitude());
+        out.colour = out.colour + transmittance * c;
+        out.alpha = Interval(1.0);
+    }
+    const int n = static_cast<int>(sample.layers.size());
+    const double error = float_gamma(kLayerRoundings * n + kCompositeRoundings) * largest;
+    for (int c = 0; c < 3; ++c) out.colour[c] = out.colour[c].widened(error);
+    out.alpha = out.alpha.widened(float_gamma(2 * n + 1));
+    return out;
+}
+
+}  // namespace
+
+PixelColour resolve_layered_pixel(const OracleShader& shader, const ResolveSettings& settings, TransparencyMode mode,
+                                  const LayeredSample* samples, ShadowTally* tally) {
+    ShadeOnce shade(shader, settings.msaa, tally);
+    const int count = settings.samples;
+    Interval3 sum(glm::dvec3(0.0));
+    Interval alpha_sum(0.0);
+    double magnitude_sum = 0.0;
+    for (int s = 0; s < count; ++s) {
+        const SampleBlend b = blend(shader, mode, samples[s], shade);
+        Interval3 term = b.colour;
+        if (!settings.alpha)  // C + (1 - alpha) background
+            for (int c = 0; c < 3; ++c) term[c] = term[c] + (Interval(1.0) - b.alpha) * Interval(settings.background[c]);
+        sum = sum + term;
+        alpha_sum = alpha_sum + b.alpha;
+        magnitude_sum += std::max(term.magnitude(), 1.0);
+    }
+    // The sums and the division round: gamma(count + 2) of the summed magnitudes.
+    const double rounding = float_gamma(count + 3) * magnitude_sum;
+    PixelColour out;
+    out.channels = settings.alpha ? 4 : 3;
+    for (int c = 0; c < 3; ++c) {
+        Interval value = (sum[c] / Interval(static_cast<double>(count))).widened(rounding / count);
+        if (settings.alpha) {
+            // RGB is the colour sum over the alpha sum; where the alpha sum may be 0 raster may write the
+            // background, and the ratio is unbounded: any value.
+            if (alpha_sum.hi <= 0.0) value = Interval(settings.background[c]);
+            else if (alpha_sum.lo <= 0.0) value = Interval(-INFINITY, INFINITY);
+            else value = (sum[c] / alpha_sum).widened(rounding / alpha_sum.lo);
+        }
+        out.channel[c] = value;
+    }
+    out.channel[3] = (alpha_sum / Interval(static_cast<double>(count))).widened(rounding / count);
+    return out;
+}
+
+}  // namespace raster::oracle
