@@ -23,9 +23,9 @@ TradeoffMode standard_samples(int samples) {
 }
 
 // A preset: every axis set at once, whatever the scene asked for (shadow maps: resolution and filter; the bias is
-// the scene's).
+// the scene's; transparency: the mode).
 TradeoffMode preset(std::string name, std::string description, int snap_bits, int samples, SamplePattern pattern,
-                    bool msaa, PrecisionModes precision, int shadow_resolution, int pcf) {
+                    bool msaa, PrecisionModes precision, int shadow_resolution, int pcf, TransparencyMode transparency) {
     return {std::move(name), std::move(description), [=](RenderSettings& s) {
                 s.snap_bits = snap_bits;
                 s.samples = samples;
@@ -34,6 +34,7 @@ TradeoffMode preset(std::string name, std::string description, int snap_bits, in
                 s.modes = precision;
                 s.shadows.resolution = shadow_resolution;
                 s.shadows.pcf = pcf;
+                s.transparency.mode = transparency;
             }};
 }
 
@@ -117,26 +118,32 @@ std::vector<TradeoffMode> make_catalogue() {
     for (int taps : {1, 3, 5}) modes.push_back(pcf(taps));
     modes.push_back(shadow_bias("shadow-bias-low", "shadow bias 1e-4 of the depth, slope bias 1", 1e-4f, 1.0f));
     modes.push_back(shadow_bias("shadow-bias-high", "shadow bias 1e-2 of the depth, slope bias 4", 1e-2f, 4.0f));
+    modes.push_back({"transparency-sorted", "transparent fragments sorted per sample and composited nearest first",
+                     [](RenderSettings& s) { s.transparency.mode = TransparencyMode::sorted; }, ModeNeeds::transparency});
+    modes.push_back({"transparency-weighted", "transparent fragments averaged by opacity, in any order (no sort)",
+                     [](RenderSettings& s) { s.transparency.mode = TransparencyMode::weighted; },
+                     ModeNeeds::transparency});
     modes.push_back(preset("fastest",
-                           "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band, 512 shadow texels, no PCF",
+                           "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band, 512 shadow texels, no PCF, "
+                           "weighted transparency",
                            4, 1, SamplePattern::standard, false,
                            {EdgeArithmetic::float32, Interpolation::affine, DepthFormat::fixed24,
                             Clipping::guard_band, true},
-                           512, 1));
+                           512, 1, TransparencyMode::weighted));
     modes.push_back(preset("balanced",
                            "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, guard band, 1024 shadow "
                            "texels, 3x3 PCF",
                            8, 4, SamplePattern::standard, true,
                            {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
                             Clipping::guard_band, true},
-                           1024, 3));
+                           1024, 3, TransparencyMode::sorted));
     modes.push_back(preset("exact",
                            "16 bits, fixed edges, 8x8 grid SSAA, perspective, reversed-Z, full clipping, 4096 shadow "
                            "texels, no PCF",
                            16, 64, SamplePattern::grid, false,
                            {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
                             Clipping::full, true},
-                           4096, 1));
+                           4096, 1, TransparencyMode::sorted));
     return modes;
 }
 
@@ -168,14 +175,15 @@ bool same_mode_settings(const RenderSettings& a, const RenderSettings& b) {
     return a.snap_bits == b.snap_bits && a.samples == b.samples && a.pattern == b.pattern && a.msaa == b.msaa &&
            a.texture_filter == b.texture_filter && a.shadows.resolution == b.shadows.resolution &&
            a.shadows.bias == b.shadows.bias && a.shadows.slope_bias == b.shadows.slope_bias &&
-           a.shadows.pcf == b.shadows.pcf &&
+           a.shadows.pcf == b.shadows.pcf && a.transparency.mode == b.transparency.mode &&
            a.modes.edges == b.modes.edges && a.modes.interpolation == b.modes.interpolation &&
            a.modes.depth == b.modes.depth && a.modes.clipping == b.modes.clipping &&
            a.modes.hierarchical_z == b.modes.hierarchical_z;
 }
 
 SceneFeatures scene_features(const Scene& scene) {
-    return {has_textures(scene), has_shadows(scene) && scene.settings.shading != ShadingMode::unlit};
+    return {has_textures(scene), has_shadows(scene) && scene.settings.shading != ShadingMode::unlit,
+            has_transparency(scene)};
 }
 
 std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, const SceneFeatures& features) {
@@ -184,6 +192,7 @@ std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, c
     for (const TradeoffMode& mode : tradeoff_modes()) {
         if (mode.needs == ModeNeeds::textures && !features.textures) continue;
         if (mode.needs == ModeNeeds::shadows && !features.shadows) continue;
+        if (mode.needs == ModeNeeds::transparency && !features.transparency) continue;
         const RenderSettings settings = apply_mode(mode, baseline);
         bool duplicate = false;
         for (const RenderSettings& other : seen) duplicate = duplicate || same_mode_settings(settings, other);
@@ -209,7 +218,8 @@ nlohmann::json mode_settings_json(const RenderSettings& s) {
              {{"resolution", s.shadows.resolution},
               {"bias", s.shadows.bias},
               {"slope_bias", s.shadows.slope_bias},
-              {"pcf", s.shadows.pcf}}}};
+              {"pcf", s.shadows.pcf}}},
+            {"transparency", to_string(s.transparency.mode)}};
 }
 
 }  // namespace raster::harness

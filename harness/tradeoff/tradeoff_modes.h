@@ -1,6 +1,7 @@
 // The speed/accuracy modes `raster tradeoff` sweeps: each a stable short name for one change to a scene's render
 // settings (sub-pixel bits, edge arithmetic, samples and pattern, MSAA, interpolation, depth format, clipping,
-// hierarchical Z, texture filter, shadow map resolution, bias and filter), or a named preset that sets all of them.
+// hierarchical Z, texture filter, shadow map resolution, bias and filter, transparency), or a named preset that
+// sets all of them.
 #pragma once
 
 #include <functional>
@@ -14,8 +15,8 @@
 namespace raster::harness {
 
 // What a scene must have for a mode to change anything: a texture filter needs textures, a shadow map setting a
-// light that casts shadows.
-enum class ModeNeeds { nothing, textures, shadows };
+// light that casts shadows, a transparency mode a material with opacity below 1.
+enum class ModeNeeds { nothing, textures, shadows, transparency };
 
 struct TradeoffMode {
     std::string name;         // e.g. "baseline", "snap4", "edges-float", "grid8x8", "affine", "fastest"
@@ -28,6 +29,7 @@ struct TradeoffMode {
 struct SceneFeatures {
     bool textures = false;
     bool shadows = false;
+    bool transparency = false;
 };
 SceneFeatures scene_features(const Scene& scene);
 
@@ -54,7 +56,7 @@ bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
 std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, const SceneFeatures& features = {});
 
 // {snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z, texture_filter,
-//  shadows: {resolution, bias, slope_bias, pcf}}
+//  shadows: {resolution, bias, slope_bias, pcf}, transparency}
 nlohmann::json mode_settings_json(const RenderSettings& settings);
 
 }  // namespace raster::harness

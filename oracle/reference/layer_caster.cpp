@@ -5,6 +5,7 @@
 
 #include "oracle/reference/embree_device.h"
 #include "oracle/reference/sample_positions.h"
+#include "oracle/reference/triangle_scene.h"
 #include "raster/core/parallel.h"
 
 namespace raster::oracle {
@@ -40,7 +41,8 @@ SampleLayers trace_layers(const Scene& scene, const OracleScene& geometry, const
     const RenderSettings& settings = scene.settings;
     const int threads = options.threads > 0 ? options.threads : default_thread_count();
     EmbreeDevice& device = embree_device_for(threads);
-    const ViewScene view(device, geometry, std::move(transparent), options.mode, collect_hit);
+    const TriangleScene view(device, geometry.view, geometry.triangles, std::move(transparent),
+                             options.mode == OracleMode::robust, collect_hit);
     const std::vector<glm::dvec2> offsets = sample_offsets_on_grid(settings.samples, settings.pattern, settings.snap_bits);
     const int samples = static_cast<int>(offsets.size());
     const size_t row_samples = static_cast<size_t>(settings.width) * static_cast<size_t>(samples);

@@ -13,6 +13,7 @@
 
 #include "oracle/reference/embree_device.h"
 #include "oracle/reference/sample_positions.h"
+#include "oracle/reference/triangle_scene.h"
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
 
@@ -50,38 +51,6 @@ std::vector<uint32_t> traced_triangles(const Scene& scene, const OracleScene& ge
     return out;
 }
 
-ViewScene::ViewScene(EmbreeDevice& device, const OracleScene& geometry, std::vector<uint32_t> triangles,
-                     OracleMode mode, RTCFilterFunctionN filter)
-    : triangles_(std::move(triangles)) {
-    scene_ = rtcNewScene(device.get());
-    device.check("rtcNewScene");
-    rtcSetSceneFlags(scene_, mode == OracleMode::robust ? RTC_SCENE_FLAG_ROBUST : RTC_SCENE_FLAG_NONE);
-    if (!triangles_.empty()) {
-        RTCGeometry mesh = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-        device.check("rtcNewGeometry");
-        auto* vertex_buffer = static_cast<float*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), geometry.view.size()));
-        auto* index_buffer = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), triangles_.size()));
-        device.check("rtcSetNewGeometryBuffer");
-        for (size_t i = 0; i < geometry.view.size(); ++i)
-            for (int k = 0; k < 3; ++k) vertex_buffer[3 * i + k] = static_cast<float>(geometry.view[i][k]);
-        for (size_t i = 0; i < triangles_.size(); ++i)
-            for (int k = 0; k < 3; ++k) index_buffer[3 * i + k] = geometry.triangles[triangles_[i]].vertex[k];
-        if (filter) rtcSetGeometryIntersectFilterFunction(mesh, filter);
-        rtcCommitGeometry(mesh);
-        rtcAttachGeometry(scene_, mesh);
-        rtcReleaseGeometry(mesh);
-        device.check("attaching the triangle geometry");
-    }
-    rtcCommitScene(scene_);
-    device.check("rtcCommitScene (BVH build)");
-}
-
-ViewScene::~ViewScene() {
-    if (scene_) rtcReleaseScene(scene_);
-}
-
 OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const OracleOptions& options,
                           SampleBuffer& out) {
     OracleStats stats;
@@ -90,7 +59,8 @@ OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const
 
     auto start = Clock::now();
     EmbreeDevice& device = embree_device_for(threads);
-    const ViewScene view(device, geometry, traced_triangles(scene, geometry, Surfaces::opaque), options.mode);
+    const TriangleScene view(device, geometry.view, geometry.triangles, traced_triangles(scene, geometry, Surfaces::opaque),
+                             options.mode == OracleMode::robust);
     stats.triangles = view.size();
     stats.ms_build = milliseconds_since(start);
 

@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "oracle/reference/embree_device.h"
 #include "oracle/reference/sample_buffer.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/scene/scene.h"
@@ -38,25 +37,6 @@ enum class Surfaces { opaque, transparent };
 // scene culls back faces, facing the eye (front = counter-clockwise in NDC, decided exactly from the view-space
 // vertices).
 std::vector<uint32_t> traced_triangles(const Scene& scene, const OracleScene& geometry, Surfaces surfaces);
-
-// An Embree scene of some scene triangles in view space (vertices rounded to float), robust unless `mode` is fast;
-// `filter`, when given, is every hit's intersection filter. Throws OracleError when Embree fails.
-class ViewScene {
-public:
-    ViewScene(EmbreeDevice& device, const OracleScene& geometry, std::vector<uint32_t> triangles, OracleMode mode,
-              RTCFilterFunctionN filter = nullptr);
-    ~ViewScene();
-    ViewScene(const ViewScene&) = delete;
-    ViewScene& operator=(const ViewScene&) = delete;
-    RTCScene get() const { return scene_; }
-    // The scene triangle of an Embree primitive id.
-    uint32_t scene_triangle(unsigned primitive) const { return triangles_[primitive]; }
-    size_t size() const { return triangles_.size(); }
-
-private:
-    RTCScene scene_ = nullptr;
-    std::vector<uint32_t> triangles_;
-};
 
 // Renders the visibility of `scene`'s opaque surfaces into `out` (resized to width x height x samples):
 // - rays start at the eye and run through each sample's screen position, in view space with direction z = -1, so

@@ -3,11 +3,13 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <embree3/rtcore.h>
 #include <glm/geometric.hpp>
 
 #include "oracle/reference/embree_device.h"
+#include "oracle/reference/triangle_scene.h"
 
 namespace raster::oracle {
 
@@ -16,39 +18,18 @@ constexpr double kPastThePoint = 1e-6;
 
 ShadowRays::ShadowRays(const OracleScene& geometry, const std::vector<uint8_t>& casts, int threads)
     : geometry_(geometry) {
-    EmbreeDevice& device = embree_device_for(threads);
-    RTCScene scene = rtcNewScene(device.get());
-    scene_ = scene;
-    device.check("rtcNewScene (shadow rays)");
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+    std::vector<uint32_t> ids;
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id)
-        if (casts[id]) scene_triangle_.push_back(id);
-    if (!scene_triangle_.empty()) {
-        RTCGeometry mesh = rtcNewGeometry(device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                                     3 * sizeof(float), geometry.world.size()));
-        auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), scene_triangle_.size()));
-        device.check("rtcSetNewGeometryBuffer (shadow rays)");
-        for (size_t i = 0; i < geometry.world.size(); ++i)
-            for (int k = 0; k < 3; ++k) vertices[3 * i + k] = static_cast<float>(geometry.world[i][k]);
-        for (size_t i = 0; i < scene_triangle_.size(); ++i)
-            for (int k = 0; k < 3; ++k) indices[3 * i + k] = geometry.triangles[scene_triangle_[i]].vertex[k];
-        rtcCommitGeometry(mesh);
-        rtcAttachGeometry(scene, mesh);
-        rtcReleaseGeometry(mesh);
-    }
-    rtcCommitScene(scene);
-    device.check("rtcCommitScene (shadow rays)");
+        if (casts[id]) ids.push_back(id);
+    scene_ = std::make_unique<TriangleScene>(embree_device_for(threads), geometry.world, geometry.triangles,
+                                             std::move(ids), /*robust=*/true);
 }
 
-ShadowRays::~ShadowRays() {
-    if (scene_) rtcReleaseScene(static_cast<RTCScene>(scene_));
-}
+ShadowRays::~ShadowRays() = default;
 
 double ShadowRays::first_surface(const glm::dvec3& light, const glm::dvec3& point) const {
     constexpr double kNone = std::numeric_limits<double>::infinity();
-    if (scene_triangle_.empty()) return kNone;
+    if (scene_->size() == 0) return kNone;
     const glm::dvec3 direction = point - light;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
@@ -64,10 +45,10 @@ double ShadowRays::first_surface(const glm::dvec3& light, const glm::dvec3& poin
     ray.ray.mask = 0xFFFFFFFFu;
     ray.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     ray.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(static_cast<RTCScene>(scene_), &context, &ray);
+    rtcIntersect1(scene_->get(), &context, &ray);
     if (ray.hit.geomID == RTC_INVALID_GEOMETRY_ID) return kNone;
     // Where the exact ray meets the hit triangle's exact plane.
-    const auto& v = geometry_.triangles[scene_triangle_[ray.hit.primID]].vertex;
+    const auto& v = geometry_.triangles[scene_->scene_triangle(ray.hit.primID)].vertex;
     const glm::dvec3 normal = glm::cross(geometry_.world[v[1]] - geometry_.world[v[0]], geometry_.world[v[2]] - geometry_.world[v[0]]);
     const double denominator = glm::dot(normal, direction);
     if (!(std::fabs(denominator) > 0.0)) return static_cast<double>(ray.ray.tfar);  // seen edge-on: Embree's

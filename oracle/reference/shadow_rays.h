@@ -4,11 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "oracle/reference/scene_geometry.h"
+#include "oracle/reference/triangle_scene.h"
 
 namespace raster::oracle {
 
@@ -26,8 +28,7 @@ public:
 
 private:
     const OracleScene& geometry_;
-    std::vector<uint32_t> scene_triangle_;  // Embree primitive id -> scene triangle id
-    void* scene_ = nullptr;                 // RTCScene
+    std::unique_ptr<TriangleScene> scene_;  // the casting triangles in world space
 };
 
 }  // namespace raster::oracle

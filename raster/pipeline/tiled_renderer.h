@@ -12,7 +12,7 @@ namespace raster {
 // arithmetic (per_sample.h, resolve.h), so the image and the visibility buffer are byte-identical to the
 // reference renderer's; only the memory order and the amount of work differ. Every stage of `stages` but
 // reference_rasterize is used. With options.keep_visibility false, result.visibility is left empty (no
-// full-frame sample planes at all).
+// full-frame sample planes at all), except in a scene with transparency, whose pass reads the opaque samples.
 void render_tiled_into(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
                        RenderResult& result);
 

@@ -18,6 +18,7 @@
 #include "raster/core/cube_faces.h"
 #include "raster/pipeline/shadow_maps.h"
 #include "raster/pipeline/vertex_stage.h"
+#include "tests/support/quad_meshes.h"
 
 namespace raster::oracle {
 namespace {
@@ -99,13 +100,7 @@ TEST(ShadowLookups, holdRastersFaceTexelsAndReferenceDepthAndAreTight) {
                 widths[widths.size() * 99 / 100], widths.back());
 }
 
-SceneMesh quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d) {
-    SceneMesh mesh;
-    mesh.data.positions = {a, b, c, d};
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-    mesh.source = "inline";
-    return mesh;
-}
+using test_support::quad_mesh;
 
 // A floor at y = 0 and a 1 x 1 square at height `height` above the origin, lit from (0, 4, 0).
 Scene square_over_floor(float height) {
@@ -113,8 +108,8 @@ Scene square_over_floor(float height) {
     scene.settings.shading = ShadingMode::blinn_phong;
     scene.settings.shadows.resolution = 256;
     scene.lights.push_back({{0, 4, 0}, glm::vec3(1.0f), 1.0f, false, true});
-    scene.meshes.push_back(quad({-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}));
-    scene.meshes.push_back(quad({-0.5f, height, -0.5f}, {-0.5f, height, 0.5f}, {0.5f, height, 0.5f}, {0.5f, height, -0.5f}));
+    scene.meshes.push_back(quad_mesh({-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}));
+    scene.meshes.push_back(quad_mesh({-0.5f, height, -0.5f}, {-0.5f, height, 0.5f}, {0.5f, height, 0.5f}, {0.5f, height, -0.5f}));
     return scene;
 }
 

@@ -12,17 +12,12 @@
 #include "raster/core/cube_faces.h"
 #include "raster/pipeline/render.h"
 #include "raster/pipeline/vertex_stage.h"
+#include "tests/support/quad_meshes.h"
 
 namespace raster {
 namespace {
 
-SceneMesh quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d) {
-    SceneMesh mesh;
-    mesh.data.positions = {a, b, c, d};
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-    mesh.source = "inline";
-    return mesh;
-}
+using test_support::quad_mesh;
 
 // A floor at y = 0 reaching `extent` each way and, unless extent_only, a 1 x 1 square at y = 1 above the origin,
 // lit by a light at `light` that casts shadows.
@@ -30,9 +25,9 @@ Scene floor_scene(const glm::vec3& light, float extent, bool occluder = true) {
     Scene scene;
     scene.settings.shading = ShadingMode::blinn_phong;
     scene.lights.push_back({light, glm::vec3(1.0f), 1.0f, false, true});
-    scene.meshes.push_back(quad({-extent, 0, -extent}, {-extent, 0, extent}, {extent, 0, extent}, {extent, 0, -extent}));
+    scene.meshes.push_back(quad_mesh({-extent, 0, -extent}, {-extent, 0, extent}, {extent, 0, extent}, {extent, 0, -extent}));
     if (occluder)
-        scene.meshes.push_back(quad({-0.5f, 1, -0.5f}, {-0.5f, 1, 0.5f}, {0.5f, 1, 0.5f}, {0.5f, 1, -0.5f}));
+        scene.meshes.push_back(quad_mesh({-0.5f, 1, -0.5f}, {-0.5f, 1, 0.5f}, {0.5f, 1, 0.5f}, {0.5f, 1, -0.5f}));
     return scene;
 }
 

@@ -12,20 +12,13 @@
 #include "raster/pipeline/render.h"
 #include "raster/pipeline/shadow_maps.h"
 #include "raster/pipeline/vertex_stage.h"
+#include "tests/support/quad_meshes.h"
 
 namespace raster {
 namespace {
 
-// A square facing the camera at view depth `depth`, half-size `half`, of colour `colour` and opacity `opacity`.
 SceneMesh pane(float depth, float half, const glm::vec3& colour, float opacity) {
-    SceneMesh mesh;
-    const float z = 5.0f - depth;  // the camera is at z = 5 looking down -z
-    mesh.data.positions = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
-    mesh.material.color = colour;
-    mesh.material.opacity = opacity;
-    mesh.source = "pane";
-    return mesh;
+    return test_support::facing_pane(depth, half, colour, opacity);
 }
 
 // Unlit panes on a background, 32 x 32 pixels, the camera at (0, 0, 5) looking at the origin.
