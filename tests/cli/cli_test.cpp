@@ -140,6 +140,29 @@ TEST(Cli, helpMentionsEveryReadmeFlag) {
         EXPECT_TRUE(contains(render.out, choice));
 }
 
+TEST(Cli, theShadowAndTransparencyFlagsAreListedAndTheABuffersCapIsAClearError) {
+    Workspace ws;
+    const Result help = run_raster(ws, {"render", "--help"});
+    for (const char* flag : {"--shadows", "--shadow-resolution", "--shadow-bias", "--shadow-slope-bias", "--pcf",
+                             "--transparency", "--max-fragments", "sorted", "weighted"})
+        EXPECT_TRUE(contains(help.out, flag)) << flag;
+    // The scene's triangle made a pane of opacity 0.5: 600-odd fragments at 1 sample.
+    std::string glass = kScene;
+    glass += "    material: {opacity: 0.5}\n";
+    const fs::path scene = ws.write_scene("glass.yaml", glass);
+    const Result capped = run_raster(ws, {"render", scene.string(), "-o", (ws.out() / "capped.png").string(),
+                                          "--max-fragments", "10"});
+    EXPECT_EQ(capped.status, 2) << capped.err;
+    EXPECT_TRUE(contains(capped.err, "more than 10 transparent fragments")) << capped.err;
+    EXPECT_FALSE(fs::exists(ws.out() / "capped.png"));
+    const Result weighted = run_raster(ws, {"render", scene.string(), "-o", (ws.out() / "weighted.png").string(),
+                                            "--max-fragments", "10", "--transparency", "weighted", "--stats"});
+    EXPECT_EQ(weighted.status, 0) << weighted.err;
+    EXPECT_TRUE(contains(weighted.out, "\"transparent_fragments\""));
+    const Result bad = run_raster(ws, {"render", scene.string(), "--transparency", "depth-peeling"});
+    EXPECT_EQ(bad.status, 2);
+}
+
 TEST(Cli, missingSubcommandIsUsageError) {
     Workspace ws;
     const Result none = run_raster(ws, {});
