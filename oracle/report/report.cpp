@@ -2,6 +2,7 @@
 #include "oracle/report/report.h"
 
 #include <cstdio>
+#include <initializer_list>
 
 namespace raster::oracle {
 namespace {
@@ -207,7 +208,20 @@ std::string report_html(const std::vector<ReportRow>& rows, const std::optional<
                 percent(fractions.value("facing", nlohmann::json())) + "</td></tr>";
         html += "<tr><td><b>genuine</b></td><td><b>" + number(c["genuine_total"]) + "</b></td><td>visibility " +
                 number(c["genuine"]["visibility"]) + ", barycentrics " + number(c["genuine"]["barycentrics"]) +
-                ", depth " + number(c["genuine"]["depth"]) + ", colour " + number(c["genuine"]["color"]) + "</td></tr>";
+                ", depth " + number(c["genuine"]["depth"]) + ", colour " + number(c["genuine"]["color"]) +
+                ", shadow " + number(c["genuine"].value("shadow", nlohmann::json(0))) + ", transparency " +
+                number(c["genuine"].value("transparency", nlohmann::json(0))) + "</td></tr>";
+        // The open classes of the shadow and transparency models, where the scene has them.
+        auto open_row = [&](const char* label, const char* key, std::initializer_list<const char*> classes) {
+            const nlohmann::json open = c.value(key, nlohmann::json::object());
+            if (open.empty()) return;
+            std::string text;
+            for (const char* name : classes)
+                text += std::string(text.empty() ? "" : ", ") + name + " " + number(open.value(name, nlohmann::json(0)));
+            html += std::string("<tr><td>") + label + "</td><td></td><td>" + text + " pixels</td></tr>";
+        };
+        open_row("shadows open", "shadows", {"edge", "depth", "inconsistent"});
+        open_row("layers open", "transparency", {"edge", "depth", "order"});
         const nlohmann::json pixels = c.value("pixels", nlohmann::json::object());
         html += "<tr><td>pixels</td><td>" + number(pixels.value("judged", nlohmann::json(0))) +
                 "</td><td>judged by colour; " + number(pixels.value("ambiguous", nlohmann::json(0))) +
