@@ -136,6 +136,7 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
         out.shadow_genuine[i] = out.colour_genuine[i] && !layered && !png_other && !ppm_other;
         out.shadow_genuine_pixels += out.shadow_genuine[i];
     }
+    for (oracle::LayerOpen open : bounds.layer_open) out.layers_open.push_back(open != oracle::LayerOpen::none);
     for (oracle::LayerOpen open : bounds.layer_open) {
         out.transparency_edge_pixels += open == oracle::LayerOpen::edge;
         out.transparency_depth_pixels += open == oracle::LayerOpen::depth;
@@ -317,7 +318,7 @@ std::string genuine_details(const Comparison& c, int shown) {
 
 Image diff_map(const Comparison& c) {
     return oracle::diff_map(c.visibility.classes, c.samples, c.colour_genuine, pixels_of(c.raster.image),
-                            {&c.shadow_genuine, &c.shadow_seen});
+                            {&c.shadow_genuine, &c.shadow_seen, &c.layers_open});
 }
 
 }  // namespace raster::harness

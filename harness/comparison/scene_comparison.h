@@ -49,6 +49,7 @@ struct Comparison {
     // and how many pixels the layers left open (ambiguous) by a layer's edge, a layer's depth against the opaque
     // surface's, or two layers' order.
     uint64_t transparency_genuine_pixels = 0;
+    std::vector<uint8_t> layers_open;  // per pixel: 1 where the layers leave it open; empty without transparency
     uint64_t transparency_edge_pixels = 0, transparency_depth_pixels = 0, transparency_order_pixels = 0;
     double raster_ms = 0;   // raster's in-process frame time (RenderStats::ms_total)
     double oracle_ms = 0;   // the oracle: geometry, BVH build, one ray per sample, shading and resolve

@@ -25,6 +25,7 @@ Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::
                 genuine |= is_genuine(classes[first + s]);
                 ambiguous |= is_ambiguous(classes[first + s]);
             }
+            ambiguous |= flag(shadows.layers_open, pixel) != 0;
             uint8_t* out = map.at(x, y);
             if (genuine || colour_genuine[pixel] || ambiguous) {
                 std::copy_n(genuine                            ? kGenuineColor

@@ -1,6 +1,6 @@
 // The disagreement map: one pixel per pixel, red where a sample disagrees genuinely, magenta where every sample
 // agrees but the colour is outside its range, orange where that is explained by a shadow test, yellow where a
-// sample is only ambiguous, blue where the shadow model left a light's visibility open, and the raster image in
+// sample is only ambiguous (or the transparent layers leave the pixel open), blue where the shadow model left a light's visibility open, and the raster image in
 // dimmed grey where everything agrees.
 #pragma once
 
@@ -19,11 +19,13 @@ inline constexpr uint8_t kAmbiguousColor[3] = {250, 210, 0};
 inline constexpr uint8_t kShadowDisagreementColor[3] = {255, 140, 0};
 inline constexpr uint8_t kShadowOpenColor[3] = {70, 150, 255};
 
-// The shadow layers of the map, per pixel, each optional (null or empty: none): genuine colour disagreements a
-// shadow test explains, and the shadow verdicts met (ShadowTally bits; an open verdict paints the pixel).
+// The shadow and transparency layers of the map, per pixel, each optional (null or empty: none): genuine colour
+// disagreements a shadow test explains, the shadow verdicts met (ShadowTally bits; an open verdict paints the
+// pixel), and the pixels the transparent layers leave open (painted as ambiguous).
 struct ShadowLayers {
     const std::vector<uint8_t>* genuine = nullptr;
     const std::vector<uint8_t>* seen = nullptr;
+    const std::vector<uint8_t>* layers_open = nullptr;
 };
 
 // `classes` holds width * height * samples entries in visibility-buffer order, `colour_genuine` one flag per pixel
