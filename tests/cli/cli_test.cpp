@@ -163,6 +163,21 @@ TEST(Cli, theShadowAndTransparencyFlagsAreListedAndTheABuffersCapIsAClearError) 
     EXPECT_EQ(bad.status, 2);
 }
 
+TEST(Cli, repeatRendersTheSameImageAndReportsTheFirstAndMedianFrames) {
+    Workspace ws;
+    const fs::path scene = ws.write_scene("scene.yaml", kScene);
+    const Result once = run_raster(ws, {"render", scene.string(), "-o", (ws.out() / "once.png").string()});
+    ASSERT_EQ(once.status, 0) << once.err;
+    const Result repeated = run_raster(ws, {"render", scene.string(), "-o", (ws.out() / "repeated.png").string(),
+                                            "--repeat", "3", "--stats"});
+    ASSERT_EQ(repeated.status, 0) << repeated.err;
+    EXPECT_EQ(read_bytes(ws.out() / "repeated.png"), read_bytes(ws.out() / "once.png"));
+    EXPECT_TRUE(contains(repeated.out, "\"frames\":3"));
+    EXPECT_TRUE(contains(repeated.out, "\"ms_first\""));
+    EXPECT_TRUE(contains(repeated.out, "\"ms_median\""));
+    EXPECT_EQ(run_raster(ws, {"render", scene.string(), "--repeat", "0"}).status, 2);
+}
+
 TEST(Cli, missingSubcommandIsUsageError) {
     Workspace ws;
     const Result none = run_raster(ws, {});
