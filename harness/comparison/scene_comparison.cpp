@@ -108,7 +108,8 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
         layer_inputs.layers = &layers;
         layer_inputs.oracle = &out.oracle_visibility;
         layer_inputs.reference = &reference;
-        layer_inputs.transparent = oracle::traced_triangles(scene, geometry, oracle::Surfaces::transparent);
+        for (uint32_t id = 0; id < geometry.triangles.size(); ++id)  // culled ones too: their facing may be uncertain
+            if (oracle::triangle_material(scene, geometry.triangles[id]).opacity < 1.0f) layer_inputs.transparent.push_back(id);
         layer_inputs.offsets = offsets;
         layer_inputs.threads = options.threads;
         layer_verdicts = oracle::check_layers(layer_inputs);
@@ -136,8 +137,11 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
         out.shadow_genuine[i] = out.colour_genuine[i] && !layered && !png_other && !ppm_other;
         out.shadow_genuine_pixels += out.shadow_genuine[i];
     }
-    for (oracle::LayerOpen open : bounds.layer_open) out.layers_open.push_back(open != oracle::LayerOpen::none);
-    for (oracle::LayerOpen open : bounds.layer_open) {
+    for (size_t pixel = 0; pixel < bounds.layer_open.size(); ++pixel) {
+        // Counted where the layers are what leaves the pixel open (not where a sample is genuine anyway).
+        const oracle::LayerOpen open = bounds.state[pixel] == oracle::PixelState::ambiguous ? bounds.layer_open[pixel]
+                                                                                           : oracle::LayerOpen::none;
+        out.layers_open.push_back(open != oracle::LayerOpen::none);
         out.transparency_edge_pixels += open == oracle::LayerOpen::edge;
         out.transparency_depth_pixels += open == oracle::LayerOpen::depth;
         out.transparency_order_pixels += open == oracle::LayerOpen::order;

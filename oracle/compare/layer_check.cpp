@@ -44,8 +44,11 @@ private:
     std::vector<std::vector<uint32_t>> cells_;
 };
 
+// Whether raster may cover the sample with the triangle or not: within the radius of an edge, where it meets the
+// near or far plane, or (culling on) where its facing is within the float error.
 bool edge_open(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
-    return in_edge_band(reference, id, screen) || on_clip_boundary(reference, id, screen);
+    return in_edge_band(reference, id, screen) || on_clip_boundary(reference, id, screen) ||
+           (reference.polygon(id).facing_uncertain && reference.contains(id, screen));
 }
 
 }  // namespace
@@ -92,7 +95,10 @@ LayerVerdicts check_layers(const LayerCheckInputs& in) {
                 const LayerHit* hits = layers.of(at);
                 for (size_t h = 0; h < layers.count(at); ++h) {
                     const LayerHit& hit = hits[h];
-                    if (edge_open(reference, hit.triangle, screen)) note(LayerOpen::edge);
+                    // A hit Embree reports where the exact triangle does not cover the sample (its edge test's
+                    // own error): raster need not show it.
+                    if (edge_open(reference, hit.triangle, screen) || !reference.contains(hit.triangle, screen))
+                        note(LayerOpen::edge);
                     if (opaque != kNoTriangle) {
                         if (view_depth_tie(reference, hit.triangle, hit.view_depth, opaque, opaque_depth, screen)) {
                             note(LayerOpen::depth);
@@ -114,7 +120,13 @@ LayerVerdicts check_layers(const LayerCheckInputs& in) {
                 for (uint32_t candidate : grid.near(px, py)) {
                     bool hit_already = false;
                     for (size_t h = 0; h < layers.count(at); ++h) hit_already = hit_already || hits[h].triangle == candidate;
-                    if (hit_already || !edge_open(reference, candidate, screen)) continue;
+                    // Embree missed it: open where raster may cover it (its clipped polygon's edge band, near and
+                    // far edges included), and where the exact triangle covers the sample (Embree's edge test may
+                    // miss what it covers). Not on_clip_boundary: away from the triangle its square's range is
+                    // unbounded wherever the ray meets the plane behind the eye, which says nothing here.
+                    if (hit_already) continue;
+                    if (reference.polygon(candidate).culled && !reference.polygon(candidate).facing_uncertain) continue;
+                    if (!in_edge_band(reference, candidate, screen) && !reference.contains(candidate, screen)) continue;
                     const ExactHit exact = reference.hit(candidate, screen);
                     if (opaque != kNoTriangle && exact.valid &&
                         !view_depth_tie(reference, candidate, exact.view_depth, opaque, opaque_depth, screen) &&

@@ -1,7 +1,8 @@
 // The transparent layers' check (README "Transparency"): per sample, which of the oracle's transparent hits raster
 // must composite in front of the opaque surface, in which order, and where the precision model leaves that open:
 // a layer's edge within the radius of the sample (it may or may not cover it; a triangle Embree missed is found
-// from a grid of the transparent polygons), a layer's depth within the tolerance of the opaque surface's (the depth
+// from a grid of the transparent polygons; a hit Embree reports outside the exact triangle, a triangle it misses
+// inside, and a culled one whose facing is uncertain are open too), a layer's depth within the tolerance of the opaque surface's (the depth
 // test may go either way), or two layers' depths within each other's (sorted: their order may go either way).
 #pragma once
 
@@ -31,7 +32,7 @@ struct LayerCheckInputs {
     const SampleLayers* layers = nullptr;
     const SampleBuffer* oracle = nullptr;  // the opaque surfaces
     const ReferenceGeometry* reference = nullptr;
-    std::vector<uint32_t> transparent;     // the transparent triangles traced (ray_caster.h traced_triangles)
+    std::vector<uint32_t> transparent;     // every transparent triangle (culled ones too), for the near misses
     std::vector<glm::dvec2> offsets;
     int threads = 0;
 };

@@ -49,7 +49,7 @@ SampleBlend blend(const OracleShader& shader, TransparencyMode mode, const Layer
         transmittance = transmittance * Interval(1.0 - a);
     }
     if (mode == TransparencyMode::weighted)
-        colour = alpha_sum > 0.0 ? (Interval(1.0) - transmittance) * (Interval(1.0 / alpha_sum) * weighted)
+        colour = alpha_sum > 0.0 ? (Interval(1.0) - transmittance) * (Interval(1.0) / Interval(alpha_sum) * weighted)
                                  : Interval3(glm::dvec3(0.0));
     SampleBlend out{colour, Interval(1.0) - transmittance};
     if (sample.opaque.triangle != kNoTriangle) {
@@ -61,7 +61,9 @@ SampleBlend blend(const OracleShader& shader, TransparencyMode mode, const Layer
     const int n = static_cast<int>(sample.layers.size());
     const double error = float_gamma(kLayerRoundings * n + kCompositeRoundings) * largest;
     for (int c = 0; c < 3; ++c) out.colour[c] = out.colour[c].widened(error);
-    out.alpha = out.alpha.widened(float_gamma(2 * n + 1));
+    // With every layer's opacity 0 (and no opaque surface) raster's transmittance is exactly 1 and its alpha
+    // exactly 0: no widening, so that the RGBA ratio below stays decided.
+    if (sample.opaque.triangle != kNoTriangle || alpha_sum > 0.0) out.alpha = out.alpha.widened(float_gamma(2 * n + 1));
     return out;
 }
 
@@ -94,7 +96,11 @@ PixelColour resolve_layered_pixel(const OracleShader& shader, const ResolveSetti
             // background, and the ratio is unbounded: any value.
             if (alpha_sum.hi <= 0.0) value = Interval(settings.background[c]);
             else if (alpha_sum.lo <= 0.0) value = Interval(-INFINITY, INFINITY);
-            else value = (sum[c] / alpha_sum).widened(rounding / alpha_sum.lo);
+            else {
+                // The sums' rounding over the alpha sum's, and the alpha sum's own rounding times the ratio.
+                value = sum[c] / alpha_sum;
+                value = value.widened(rounding / alpha_sum.lo + float_gamma(count + 3) * value.magnitude());
+            }
         }
         out.channel[c] = value;
     }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <string>
 #include <utility>
 
@@ -113,47 +114,70 @@ public:
         row_begin_ = row_begin;
         const size_t band_samples = static_cast<size_t>(row_end - row_begin) * opaque_.width * opaque_.samples;
         reached_.assign(band_samples, 0);
-        if (in_.settings.mode == TransparencyMode::sorted) {
-            heads_.assign(band_samples, kEnd);
-            fragments_.clear();
-            for (const TriangleSetup& t : *in_.setups) {
-                if (t.max_y < row_begin || t.min_y >= row_end || overflow_) continue;
-                each_fragment(t, row_begin, row_end, *in_.frame, opaque_, [&](size_t at, const SampleHit& hit) {
-                    if (kept_.fetch_add(1) >= in_.settings.max_fragments) {
-                        overflow_ = true;
-                        return;
-                    }
-                    fragments_.push_back({t.triangle_id, hit.view_depth, hit.bary, heads_[at]});
-                    heads_[at] = static_cast<uint32_t>(fragments_.size() - 1);
-                    reached_[at] = 1;
-                });
-            }
-        } else {
-            sums_.assign(band_samples, WeightedSum{});
-            PixelShadeCache cache(*in_.shader, false);
-            for (const TriangleSetup& t : *in_.setups) {
-                if (t.max_y < row_begin || t.min_y >= row_end) continue;
-                const float a = in_.shader->opacity(t.triangle_id);
-                int shaded_pixel = -1;
-                glm::vec3 colour(0.0f);
-                each_fragment(t, row_begin, row_end, *in_.frame, opaque_, [&](size_t at, const SampleHit& hit) {
-                    const int pixel = static_cast<int>(at / static_cast<size_t>(opaque_.samples));
-                    if (!in_.resolve.msaa || pixel != shaded_pixel) colour = cache.shade(t.triangle_id, hit.bary);
-                    shaded_pixel = pixel;
-                    WeightedSum& sum = sums_[at];
-                    sum.color += a * colour;
-                    sum.alpha += a;
-                    sum.transmittance *= 1.0f - a;
-                    reached_[at] = 1;
-                    ++kept_;
-                });
-            }
-        }
+        if (in_.settings.mode == TransparencyMode::sorted) keep_fragments(row_begin, row_end, band_samples);
+        else accumulate_fragments(row_begin, row_end, band_samples);
         if (overflow_) return;
         resolve_band(row_end);
     }
 
 private:
+    // sorted: every fragment into the band's A-buffer. The frame's count is claimed once per setup and band (not
+    // per fragment: one shared counter would bounce between the cores), so the cap may be passed by one setup's
+    // share of a band before the pass stops.
+    void keep_fragments(int row_begin, int row_end, size_t band_samples) {
+        heads_.assign(band_samples, kEnd);
+        fragments_.clear();
+        for (const TriangleSetup& t : *in_.setups) {
+            if (t.max_y < row_begin || t.min_y >= row_end) continue;
+            const size_t before = fragments_.size();
+            each_fragment(t, row_begin, row_end, *in_.frame, opaque_, [&](size_t at, const SampleHit& hit) {
+                fragments_.push_back({t.triangle_id, hit.view_depth, hit.bary, heads_[at]});
+                heads_[at] = static_cast<uint32_t>(fragments_.size() - 1);
+                reached_[at] = 1;
+            });
+            const auto added = static_cast<int64_t>(fragments_.size() - before);
+            if (added > 0 && kept_.fetch_add(added) + added > in_.settings.max_fragments) overflow_ = true;
+            if (overflow_) return;
+        }
+    }
+
+    // weighted: each fragment shaded and added to its sample's sums. A clipped triangle's setups are consecutive
+    // and share its id: they are taken together, so that MSAA shades the triangle once per pixel, at the first
+    // sample (pattern order) any of them keeps.
+    void accumulate_fragments(int row_begin, int row_end, size_t band_samples) {
+        sums_.assign(band_samples, WeightedSum{});
+        const std::vector<TriangleSetup>& setups = *in_.setups;
+        const size_t samples = static_cast<size_t>(opaque_.samples);
+        int64_t added = 0;
+        for (size_t first = 0, last = 0; first < setups.size(); first = last) {
+            const uint32_t triangle = setups[first].triangle_id;
+            for (last = first; last < setups.size() && setups[last].triangle_id == triangle;) ++last;
+            group_.clear();
+            for (size_t k = first; k < last; ++k) {
+                const TriangleSetup& t = setups[k];
+                if (t.max_y < row_begin || t.min_y >= row_end) continue;
+                each_fragment(t, row_begin, row_end, *in_.frame, opaque_,
+                              [&](size_t at, const SampleHit& hit) { group_.push_back({at, hit.bary}); });
+            }
+            if (last - first > 1)  // pieces: their samples in pixel and pattern order
+                std::sort(group_.begin(), group_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+            const float a = in_.shader->opacity(triangle);
+            size_t shaded_pixel = SIZE_MAX;
+            glm::vec3 colour(0.0f);
+            for (const auto& [at, bary] : group_) {
+                if (!in_.resolve.msaa || at / samples != shaded_pixel) colour = in_.shader->shade(triangle, bary);
+                shaded_pixel = at / samples;
+                WeightedSum& sum = sums_[at];
+                sum.color += a * colour;
+                sum.alpha += a;
+                sum.transmittance *= 1.0f - a;
+                reached_[at] = 1;
+            }
+            added += static_cast<int64_t>(group_.size());
+        }
+        kept_.fetch_add(added);
+    }
+
     // The sample's layers, sorted front to back (ties in draw order), blended.
     void blend_sorted(size_t band_at, size_t at, PixelShadeCache& cache, Blend& blend) {
         layers_.clear();
@@ -209,6 +233,7 @@ private:
     std::vector<Fragment> fragments_;   // sorted: the band's A-buffer
     std::vector<const Fragment*> layers_;
     std::vector<WeightedSum> sums_;     // weighted: per band sample
+    std::vector<std::pair<size_t, glm::vec3>> group_;  // weighted: one triangle's fragments in the band
 };
 
 }  // namespace

@@ -45,8 +45,9 @@ struct TransparencyInputs {
 //   weighted: C = (sum a_i c_i / sum a_i) (1 - T) + T c_opaque, the same T: any order, no lists.
 // The pixel is the mean of C + (1 - alpha) background over its samples, or with RGBA output the mean of C over
 // the mean alpha, and the mean alpha. MSAA shades each triangle once per pixel, at the first of the pixel's samples
-// in pattern order where it is kept (weighted: where its setup covers). Returns the number of fragments kept.
-// Throws InputError when `sorted` would keep more than settings.max_fragments fragments in the frame.
+// in pattern order where it is kept. Returns the number of fragments kept.
+// Throws InputError when `sorted` would keep more than settings.max_fragments fragments in the frame (counted per
+// setup and band, so the pass stops within one setup's share of a band past the cap).
 size_t composite_transparency(const TransparencyInputs& inputs, Image& image);
 
 }  // namespace raster
