@@ -1,5 +1,4 @@
 // `raster render`: renders a scene file to an image, with flags that override the scene's settings.
-#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -9,6 +8,7 @@
 
 #include "apps/command.h"
 #include "apps/settings_flags.h"
+#include "harness/tradeoff/tradeoff.h"
 #include "raster/core/errors.h"
 #include "raster/image/image.h"
 #include "raster/pipeline/render.h"
@@ -121,10 +121,7 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
         if (flags.repeat > 1) {
             stats["frames"] = flags.repeat;
             stats["ms_first"] = frame_ms.front();
-            std::vector<double> sorted = frame_ms;
-            std::sort(sorted.begin(), sorted.end());
-            const size_t n = sorted.size();
-            stats["ms_median"] = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+            stats["ms_median"] = harness::median(frame_ms);
         }
         out << stats.dump() << "\n";
     }

@@ -30,8 +30,9 @@ Camera face_camera(const glm::vec3& light, int face, const ShadowClipPlanes& pla
 }
 
 // Renders one face into `depth` (resolution^2 texels): the view depth of the nearest surface at each texel centre.
-void render_face(const Scene& scene, const Camera& camera, const PipelineStages& stages,
-                 const ShadowRenderOptions& options, int resolution, float* depth) {
+// `transparent` is transparent_triangles(scene): those cast no shadow (README "Transparency").
+void render_face(const Scene& scene, const std::vector<uint8_t>& transparent, const Camera& camera,
+                 const PipelineStages& stages, const ShadowRenderOptions& options, int resolution, float* depth) {
     const TransformedScene geometry = run_vertex_stage(scene, VertexStageNeeds{}, view_matrix(camera),
                                                        projection_matrix(camera, resolution, resolution));
     FrameParams frame = frame_params(resolution, resolution, kDefaultSnapBits);
@@ -39,8 +40,8 @@ void render_face(const Scene& scene, const Camera& camera, const PipelineStages&
     frame.threads = options.threads;
     RenderStats stats;
     std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, stages, /*cull_backfaces=*/false, stats);
-    std::vector<TriangleSetup> transparent;  // cast no shadow (README "Transparency")
-    split_transparent_setups(transparent_triangles(scene), setups, transparent);
+    std::vector<TriangleSetup> set_aside;
+    split_transparent_setups(transparent, setups, set_aside);
     if (options.path == RasterPath::tiled) {
         rasterize_depth_tiled(setups, frame, options.allow_simd, depth);
         return;
@@ -70,6 +71,7 @@ ShadowMaps::ShadowMaps(const Scene& scene, const std::vector<glm::vec3>& world_p
     : settings_(scene.settings.shadows), cube_of_light_(scene.lights.size(), -1) {
     const int n = settings_.resolution;
     const size_t face_texels = static_cast<size_t>(n) * static_cast<size_t>(n);
+    const std::vector<uint8_t> transparent = transparent_triangles(scene);
     for (size_t light = 0; light < scene.lights.size(); ++light) {
         if (!scene.lights[light].shadows) continue;
         cube_of_light_[light] = static_cast<int>(cubes_.size());
@@ -80,7 +82,7 @@ ShadowMaps::ShadowMaps(const Scene& scene, const std::vector<glm::vec3>& world_p
         cube.far = planes.far;
         cube.depth.resize(kCubeFaces * face_texels);
         for (int face = 0; face < kCubeFaces; ++face)
-            render_face(scene, face_camera(cube.light, face, planes), stages, options, n,
+            render_face(scene, transparent, face_camera(cube.light, face, planes), stages, options, n,
                         cube.depth.data() + static_cast<size_t>(face) * face_texels);
     }
 }

@@ -50,11 +50,21 @@ const Material& material_of(const SceneMesh& mesh, uint32_t triangle) {
     return after == mesh.parts.begin() ? mesh.material : std::prev(after)->material;
 }
 
-bool has_textures(const Scene& scene) {
-    bool textured = false;
+namespace {
+
+// Whether some material of some mesh satisfies `test`.
+template <typename Test>
+bool any_material(const Scene& scene, Test test) {
+    bool found = false;
     for (const SceneMesh& mesh : scene.meshes)
-        for_each_material(mesh, [&](const Material& material) { textured = textured || material.texture.has_value(); });
-    return textured;
+        for_each_material(mesh, [&](const Material& material) { found = found || test(material); });
+    return found;
+}
+
+}  // namespace
+
+bool has_textures(const Scene& scene) {
+    return any_material(scene, [](const Material& material) { return material.texture.has_value(); });
 }
 
 bool has_shadows(const Scene& scene) {
@@ -62,10 +72,7 @@ bool has_shadows(const Scene& scene) {
 }
 
 bool has_transparency(const Scene& scene) {
-    bool transparent = false;
-    for (const SceneMesh& mesh : scene.meshes)
-        for_each_material(mesh, [&](const Material& material) { transparent = transparent || material.opacity < 1.0f; });
-    return transparent;
+    return any_material(scene, [](const Material& material) { return material.opacity < 1.0f; });
 }
 
 const char* to_string(TransparencyMode mode) { return mode == TransparencyMode::sorted ? "sorted" : "weighted"; }
