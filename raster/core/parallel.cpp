@@ -1,14 +1,36 @@
-// A minimal deterministic work splitter over std::thread with an atomic work counter.
+// The work splitter over oneTBB: one task arena per thread count, kept for the process, so worker threads are
+// started once and reused by every frame; indices are handed out one at a time as workers become free.
 #include "raster/core/parallel.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
-#include <atomic>
-#include <exception>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 namespace raster {
+namespace {
+
+// The arena for `threads` concurrent workers (the caller included), created on first use and kept: an arena's
+// threads persist across calls, which is what makes the first tile of a frame start at once.
+tbb::task_arena& arena_for(int threads) {
+    static std::mutex mutex;
+    static std::map<int, std::unique_ptr<tbb::task_arena>> arenas;
+    std::lock_guard<std::mutex> lock(mutex);
+    std::unique_ptr<tbb::task_arena>& arena = arenas[threads];
+    if (!arena) {
+        arena = std::make_unique<tbb::task_arena>(threads);
+        arena->initialize();
+    }
+    return *arena;
+}
+
+}  // namespace
 
 int default_thread_count() {
     const unsigned hardware = std::thread::hardware_concurrency();
@@ -22,26 +44,15 @@ void parallel_for(size_t count, int threads, const std::function<void(size_t)>& 
         for (size_t i = 0; i < count; ++i) fn(i);
         return;
     }
-    std::atomic<size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failure_mutex;
-    auto work = [&] {
-        for (size_t i; (i = next.fetch_add(1, std::memory_order_relaxed)) < count;) {
-            try {
-                fn(i);
-            } catch (...) {
-                std::lock_guard<std::mutex> lock(failure_mutex);
-                if (!failure) failure = std::current_exception();
-                next.store(count);
-            }
-        }
-    };
-    std::vector<std::thread> pool;
-    pool.reserve(workers - 1);
-    for (size_t t = 1; t < workers; ++t) pool.emplace_back(work);
-    work();
-    for (auto& thread : pool) thread.join();
-    if (failure) std::rethrow_exception(failure);
+    // Grain 1 with the simple partitioner: every index is its own task, taken by whichever thread is free (tiles
+    // differ widely in cost). TBB cancels the rest and rethrows the first exception here.
+    arena_for(static_cast<int>(workers)).execute([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1),
+                          [&](const tbb::blocked_range<size_t>& range) {
+                              for (size_t i = range.begin(); i != range.end(); ++i) fn(i);
+                          },
+                          tbb::simple_partitioner());
+    });
 }
 
 }  // namespace raster

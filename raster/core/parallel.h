@@ -1,4 +1,4 @@
-// A minimal deterministic work splitter: runs fn(i) for i in [0, count) on a few threads.
+// The work splitter: runs fn(i) for i in [0, count) on a few threads.
 #pragma once
 
 #include <cstddef>
