@@ -1,4 +1,4 @@
-// Blinn-Phong and Phong lighting per point light, with one-sided Lambert diffuse and optional 1/r^2 attenuation.
+// Lighting of one point: Blinn-Phong and Phong through the batch kernels, and the per-light parts the stylized modes use.
 #include "raster/pipeline/lighting.h"
 
 #include <cmath>
@@ -52,24 +52,22 @@ float highlight_of(float lobe, float exponent) {
 LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
                                 const Material& material, const std::vector<Light>& lights,
                                 const glm::vec3& ambient_light, SpecularModel model, const float* visibility) {
+    thread_local LightingBatch batch;  // lanes past the first hold stale points, computed and ignored
+    thread_local std::vector<float> visibility_rows;
+    for (int c = 0; c < 3; ++c) {
+        batch.position[c][0] = position[c];
+        batch.normal[c][0] = normal[c];
+        batch.to_eye[c][0] = to_eye[c];
+    }
+    if (visibility) {
+        visibility_rows.resize(lights.size() * LightingBatch::kRow);
+        for (size_t k = 0; k < lights.size(); ++k) visibility_rows[k * LightingBatch::kRow] = visibility[k];
+    }
+    light_points(batch, 0, 1, material, lights, ambient_light, model, visibility ? visibility_rows.data() : nullptr);
     LightingTerms terms;
-    terms.diffuse = material.ambient * ambient_light;
-    for (size_t index = 0; index < lights.size(); ++index) {
-        const Light& light = lights[index];
-        const float visible = visibility ? visibility[index] : 1.0f;
-        if (visible == 0.0f) continue;  // in shadow: the light adds nothing
-        LightArrival arrival;
-        if (!light_arrives(light, position, normal, arrival)) continue;
-        const auto& [to_light, n_dot_l, radiance] = arrival;
-        float lobe;
-        if (model == SpecularModel::blinn) {
-            lobe = blinn_lobe(normal, to_light, to_eye);
-        } else {
-            const glm::vec3 reflected = 2.0f * n_dot_l * normal - to_light;
-            lobe = glm::dot(reflected, to_eye);
-        }
-        terms.diffuse += radiance * material.diffuse * n_dot_l * visible;
-        terms.specular += radiance * material.specular * highlight_of(lobe, material.exponent) * visible;
+    for (int c = 0; c < 3; ++c) {
+        terms.diffuse[c] = batch.diffuse[c][0];
+        terms.specular[c] = batch.specular[c][0];
     }
     return terms;
 }

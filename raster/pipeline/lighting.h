@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "raster/pipeline/lighting_kernels.h"
 #include "raster/scene/scene.h"
 
 namespace raster {
@@ -16,8 +17,6 @@ struct LightingTerms {
     glm::vec3 diffuse{0.0f};
     glm::vec3 specular{0.0f};
 };
-
-enum class SpecularModel { blinn, phong };
 
 // What one point light gives a surface point: the unit direction to it, n.l, and its radiance (colour times
 // intensity, over r^2 with attenuation).
@@ -42,7 +41,8 @@ float specular_power(float base, float exponent);
 
 // Ambient plus, for each light, Lambert diffuse and a specular lobe, with optional 1/r^2 attenuation, each light's
 // part times its visibility (visibility[i] for lights[i], in [0, 1]: the shadow maps' answer; null: every light
-// fully visible). Lighting is one-sided: a light behind the surface (n.l <= 0) adds nothing. `normal` must be unit
+// fully visible). One point through the lighting kernels (lighting_kernels.h): the same bits as a batch gives it.
+// Lighting is one-sided: a light behind the surface (n.l <= 0) adds nothing. `normal` must be unit
 // length; `to_eye` is the unit vector from the point to the eye.
 LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& normal, const glm::vec3& to_eye,
                                 const Material& material, const std::vector<Light>& lights,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 #include "raster/core/parallel.h"
 #include "raster/image/to_byte.h"
@@ -15,10 +16,21 @@ PixelResolver::PixelResolver(const Shader& shader, const ResolveParams& params, 
     background_[3] = 0;
 }
 
-void PixelResolver::one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const {
-    const glm::vec3 color = shader_.shade(triangle, bary);
+void PixelResolver::write_covered(const glm::vec3& color, uint8_t* out) const {
     for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
     if (params_.alpha) out[3] = 255;
+}
+
+void PixelResolver::one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const {
+    one_triangle_each(&triangle, &bary, &out, 1);
+}
+
+void PixelResolver::one_triangle_each(const uint32_t* triangle, const glm::vec3* bary, uint8_t* const* out,
+                                      size_t count) const {
+    thread_local std::vector<glm::vec3> colors;
+    colors.resize(count);
+    shader_.shade_many(triangle, bary, count, colors.data());
+    for (size_t j = 0; j < count; ++j) write_covered(colors[j], out[j]);
 }
 
 void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const {
@@ -26,22 +38,32 @@ void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uin
     const bool uniform = is_uniform(triangle, samples_);
     if (uniform && triangle[0] == kNoTriangle) return background(out);
     if (uniform && shades_uniform_pixels_once()) return one_triangle(triangle[0], bary[0], out);
-    glm::vec3 sum(0.0f);
+    // The points to shade, in sample order, each with the number of samples its colour stands for: SSAA every
+    // covered sample once; MSAA the first sample of each triangle, for all of that triangle's samples.
+    thread_local std::vector<uint32_t> shade_triangle;
+    thread_local std::vector<glm::vec3> shade_bary, colors;
+    thread_local std::vector<int> weight;
+    shade_triangle.clear();
+    shade_bary.clear();
+    weight.clear();
     int covered = 0;
     for (int s = 0; s < samples_; ++s) {
         if (triangle[s] == kNoTriangle) continue;
         ++covered;
-        if (!params_.msaa) {
-            sum += shader_.shade(triangle[s], bary[s]);
-            continue;
-        }
-        // MSAA: only the first sample of each triangle shades, for all of that triangle's samples.
-        if (!first_of_its_triangle(triangle, s)) continue;
         int count = 1;
-        for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
-        sum += static_cast<float>(count) * shader_.shade(triangle[s], bary[s]);
+        if (params_.msaa) {
+            if (!first_of_its_triangle(triangle, s)) continue;
+            for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
+        }
+        shade_triangle.push_back(triangle[s]);
+        shade_bary.push_back(bary[s]);
+        weight.push_back(count);
     }
     if (covered == 0) return background(out);
+    colors.resize(shade_triangle.size());
+    shader_.shade_many(shade_triangle.data(), shade_bary.data(), shade_triangle.size(), colors.data());
+    glm::vec3 sum(0.0f);
+    for (size_t k = 0; k < colors.size(); ++k) sum += static_cast<float>(weight[k]) * colors[k];
     glm::vec3 color;
     if (params_.alpha) color = sum / static_cast<float>(covered);
     else color = (sum + static_cast<float>(samples_ - covered) * params_.background) / static_cast<float>(samples_);

@@ -29,11 +29,18 @@ public:
     // The two cases resolve() answers without looking at every sample: no sample covered, and (when
     // shades_uniform_pixels_once: with MSAA or one sample) every sample on one triangle, shaded once at `bary`,
     // the pattern's first sample.
-    void background(uint8_t* out) const { std::copy(background_, background_ + channels(), out); }
+    void background(uint8_t* out) const {
+        for (int c = 0; c < 3; ++c) out[c] = background_[c];  // fixed counts: no library call per pixel
+        if (params_.alpha) out[3] = 0;
+    }
     bool shades_uniform_pixels_once() const { return params_.msaa || samples_ == 1; }
     void one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const;
+    // one_triangle for `count` pixels at once (their shading batched): the same bytes.
+    void one_triangle_each(const uint32_t* triangle, const glm::vec3* bary, uint8_t* const* out, size_t count) const;
 
 private:
+    // A shaded colour into a pixel every sample of which it covers.
+    void write_covered(const glm::vec3& color, uint8_t* out) const;
     const Shader& shader_;
     ResolveParams params_;
     int samples_;

@@ -29,6 +29,9 @@ bool any_mesh_has_parts(const Scene& scene) {
 Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting,
                const ShadowMaps* shadows)
     : scene_(scene), geometry_(geometry), mode_(scene.settings.shading), lighting_(lighting) {
+    specular_model_ = mode_ == ShadingMode::phong ? SpecularModel::phong : SpecularModel::blinn;
+    lights_in_batches_ =
+        (mode_ == ShadingMode::phong || mode_ == ShadingMode::blinn_phong) && lighting_ == evaluate_lighting;
     if (any_mesh_has_parts(scene)) {
         triangle_material_.resize(geometry.triangles.size());
         for (uint32_t tri = 0; tri < geometry.triangles.size(); ++tri) {
@@ -168,13 +171,19 @@ bool Shader::texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3&
     return true;
 }
 
-LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary, const float* visibility) const {
+void Shader::surface_at(uint32_t triangle, const glm::vec3& bary, glm::vec3& position, glm::vec3& normal) const {
     const TriangleIndices& v = geometry_.triangles[triangle];
-    glm::vec3 position(0.0f), normal(0.0f);
+    position = glm::vec3(0.0f);
+    normal = glm::vec3(0.0f);
     for (int i = 0; i < 3; ++i) {
         position += bary[i] * geometry_.world_position[v.v[i]];
         normal += bary[i] * geometry_.world_normal[v.v[i]];
     }
+}
+
+LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary, const float* visibility) const {
+    glm::vec3 position, normal;
+    surface_at(triangle, bary, position, normal);
     const glm::vec3 unit_normal = unit_or_zero(normal), to_eye = unit_or_zero(scene_.camera.eye - position);
     const RenderSettings& settings = scene_.settings;
     switch (mode_) {
@@ -186,11 +195,71 @@ LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary, const f
                                            settings.gooch, visibility);
         default:
             return lighting_(position, unit_normal, to_eye, material(triangle), scene_.lights, settings.ambient_light,
-                             mode_ == ShadingMode::phong ? SpecularModel::phong : SpecularModel::blinn, visibility);
+                             specular_model_, visibility);
     }
 }
 
+void Shader::light_batch(const uint32_t* triangle, const glm::vec3* bary, size_t count, LightingBatch& batch) const {
+    for (size_t j = 0; j < count; ++j) {
+        glm::vec3 position, normal;
+        surface_at(triangle[j], bary[j], position, normal);
+        for (int c = 0; c < 3; ++c) {
+            batch.position[c][j] = position[c];
+            batch.normal[c][j] = normal[c];
+        }
+    }
+    orient_points(batch, count, scene_.camera.eye);
+    thread_local std::vector<float> visibility;
+    if (shadows_) {
+        visibility.assign(scene_.lights.size() * LightingBatch::kRow, 1.0f);
+        for (size_t j = 0; j < count; ++j) {
+            const glm::vec3 position(batch.position[0][j], batch.position[1][j], batch.position[2][j]);
+            for (size_t light : shadowed_lights_)
+                visibility[light * LightingBatch::kRow + j] =
+                    shadows_->visibility(light, position, face_normal_[triangle[j]]);
+        }
+    }
+    for (size_t first = 0, end; first < count; first = end) {  // runs of one material
+        const Material& run_material = material(triangle[first]);
+        for (end = first + 1; end < count && &material(triangle[end]) == &run_material;) ++end;
+        light_points(batch, first, end - first, run_material, scene_.lights, scene_.settings.ambient_light,
+                     specular_model_, shadows_ ? visibility.data() : nullptr);
+    }
+}
+
+void Shader::shade_many(const uint32_t* triangle, const glm::vec3* bary, size_t count, glm::vec3* out) const {
+    if (!lights_in_batches_) {
+        for (size_t j = 0; j < count; ++j) out[j] = shade_point(triangle[j], bary[j]);
+        return;
+    }
+    thread_local LightingBatch batch;
+    for (size_t start = 0; start < count; start += kLightingBatch) {
+        const size_t n = std::min(kLightingBatch, count - start);
+        light_batch(triangle + start, bary + start, n, batch);
+        for (size_t j = 0; j < n; ++j) {
+            const uint32_t tri = triangle[start + j];
+            const glm::vec3 diffuse(batch.diffuse[0][j], batch.diffuse[1][j], batch.diffuse[2][j]);
+            const glm::vec3 specular(batch.specular[0][j], batch.specular[1][j], batch.specular[2][j]);
+            glm::vec3 texel(1.0f);
+            const bool textured = texture_factor(tri, bary[start + j], texel);
+            out[start + j] = lit_color(tri, bary[start + j], textured ? &texel : nullptr, {diffuse, specular});
+        }
+    }
+}
+
+glm::vec3 Shader::lit_color(uint32_t triangle, const glm::vec3& bary, const glm::vec3* texel,
+                            const LightingTerms& terms) const {
+    const glm::vec3 base = texel ? base_color(triangle, bary) * *texel : base_color(triangle, bary);
+    return base * terms.diffuse + terms.specular;
+}
+
 glm::vec3 Shader::shade(uint32_t triangle, const glm::vec3& bary) const {
+    glm::vec3 color;
+    shade_many(&triangle, &bary, 1, &color);
+    return color;
+}
+
+glm::vec3 Shader::shade_point(uint32_t triangle, const glm::vec3& bary) const {
     glm::vec3 texel(1.0f);
     const bool textured = texture_factor(triangle, bary, texel);
     const float* visibility = visibility_at(triangle, bary);
@@ -224,9 +293,7 @@ glm::vec3 Shader::shade(uint32_t triangle, const glm::vec3& bary) const {
         case ShadingMode::blinn_phong:
         case ShadingMode::cel:
         case ShadingMode::gooch: {
-            const LightingTerms terms = light_at(triangle, bary, visibility);
-            const glm::vec3 base = textured ? base_color(triangle, bary) * texel : base_color(triangle, bary);
-            return base * terms.diffuse + terms.specular;
+            return lit_color(triangle, bary, textured ? &texel : nullptr, light_at(triangle, bary, visibility));
         }
     }
     return glm::vec3(0.0f);

@@ -31,6 +31,8 @@ public:
 
     // Linear RGB of triangle `triangle` at barycentrics `bary` (w.r.t. its original vertices), unclamped.
     glm::vec3 shade(uint32_t triangle, const glm::vec3& bary) const;
+    // shade() of `count` points into out[0..count): the same bits, with Blinn-Phong and Phong lit in SIMD batches.
+    void shade_many(const uint32_t* triangle, const glm::vec3* bary, size_t count, glm::vec3* out) const;
     // The opacity of the triangle's material (1 opaque).
     float opacity(uint32_t triangle) const { return material(triangle).opacity; }
 
@@ -40,7 +42,17 @@ private:
     // The texture's value at the point when the triangle's material has one (it multiplies the base colour).
     bool texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3& factor) const;
     const Material& material(uint32_t triangle) const;
+    // One point, every mode; Blinn-Phong and Phong only when lit by a lighting function other than the kernels'.
+    glm::vec3 shade_point(uint32_t triangle, const glm::vec3& bary) const;
+    // base * diffuse + specular, the base colour times the texel when there is one (Phong, Blinn-Phong, cel, Gooch).
+    glm::vec3 lit_color(uint32_t triangle, const glm::vec3& bary, const glm::vec3* texel,
+                        const LightingTerms& terms) const;
+    // The world position and the interpolated (not yet unit) normal at the point.
+    void surface_at(uint32_t triangle, const glm::vec3& bary, glm::vec3& position, glm::vec3& normal) const;
     LightingTerms light_at(uint32_t triangle, const glm::vec3& bary, const float* visibility) const;
+    // Up to kLightingBatch Blinn-Phong or Phong points: interpolated into the batch, oriented, shadow visibility per
+    // light, lit run by run of one material; the terms are left in `batch`.
+    void light_batch(const uint32_t* triangle, const glm::vec3* bary, size_t count, LightingBatch& batch) const;
     // Flat and Gouraud's terms at a face or corner: terms_stride_ entries, each shadowed light's scaled by its
     // visibility and added to the first (ambient and the lights without shadows).
     LightingTerms combined(const LightingTerms* terms, const float* visibility) const;
@@ -56,6 +68,8 @@ private:
     const TransformedScene& geometry_;
     ShadingMode mode_;
     LightingFunction lighting_;
+    SpecularModel specular_model_;             // Phong's lobe for phong, Blinn's for the other lit modes
+    bool lights_in_batches_ = false;           // Blinn-Phong or Phong lit by the kernels: shade_many batches them
     const ShadowMaps* shadows_ = nullptr;      // null when no light casts shadows
     std::vector<const Material*> triangle_material_;  // per triangle, only when a mesh has several materials
     std::vector<size_t> shadowed_lights_;      // the scene lights with shadow maps
