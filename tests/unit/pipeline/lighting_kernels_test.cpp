@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <random>
 #include <sstream>
@@ -91,6 +92,9 @@ TEST(LightingKernels, everyTargetTheCpuRunsGivesTheScalarFallbacksBits) {
     ASSERT_GE(targets.size(), 1u);
     const std::string fallback = lighting_target_name(targets.back());
     EXPECT_TRUE(fallback == "EMU128" || fallback == "SCALAR") << "the last target is " << fallback;
+    std::printf("lighting targets this CPU runs:");
+    for (const int64_t target : targets) std::printf(" %s", lighting_target_name(target).c_str());
+    std::printf("\n");
     for (const float exponent : {40.0f, 0.0f, 2.5f, 300.0f})
         for (const SpecularModel model : {SpecularModel::blinn, SpecularModel::phong})
             for (const bool with_visibility : {false, true}) {
