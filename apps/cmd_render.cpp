@@ -14,6 +14,7 @@
 #include "raster/pipeline/render.h"
 #include "raster/pipeline/resolve.h"
 #include "raster/formats/scene_format_seed000.h"
+#include "raster/core/parallel.h"
 #include "raster/formats/scene_loader.h"
 
 namespace raster::cli {
@@ -83,6 +84,7 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     std::optional<Seed000Config> seed000;  // a seed 000 config's task decides what is written
     try {
         SceneFormat format = SceneFormat::raster;
+        start_threads(flags.settings.threads);  // the workers start while the scene loads
         scene = load_scene(flags.scene, &format);
         if (format == SceneFormat::seed000) seed000 = load_seed000_config(flags.scene);
         apply_settings_flags(flags.settings, scene);

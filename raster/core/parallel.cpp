@@ -37,6 +37,11 @@ int default_thread_count() {
     return hardware == 0 ? 1 : static_cast<int>(std::min(hardware, 64u));
 }
 
+void start_threads(int threads) {
+    if (threads <= 0) threads = default_thread_count();
+    if (threads > 1) arena_for(threads).enqueue([] {});  // an empty task wakes the arena's workers
+}
+
 void parallel_for(size_t count, int threads, const std::function<void(size_t)>& fn) {
     if (threads <= 0) threads = default_thread_count();
     const size_t workers = std::min<size_t>(static_cast<size_t>(threads), count);

@@ -14,4 +14,8 @@ int default_thread_count();
 // The first exception thrown by fn is rethrown on the calling thread after all threads stop.
 void parallel_for(size_t count, int threads, const std::function<void(size_t)>& fn);
 
+// Starts the worker threads parallel_for(_, threads, _) will use, without waiting for them: a program calls it
+// before loading its scene so that the first frame finds them running. The threads persist until exit.
+void start_threads(int threads);
+
 }  // namespace raster

@@ -44,12 +44,17 @@ void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& 
             stages.setup(polygon, static_cast<uint32_t>(tri), frame, out);
         }
     });
-    std::vector<TriangleSetup>& setups = workspace.setups;
-    setups.clear();
+    // Each chunk's setups go to their place in draw order, the chunks copied in parallel.
+    std::vector<size_t> chunk_start(chunks + 1, 0);
     for (size_t chunk = 0; chunk < chunks; ++chunk) {
-        setups.insert(setups.end(), chunk_setups[chunk].begin(), chunk_setups[chunk].end());
+        chunk_start[chunk + 1] = chunk_start[chunk] + chunk_setups[chunk].size();
         stats.clipped += chunk_clipped[chunk];
     }
+    std::vector<TriangleSetup>& setups = workspace.setups;
+    setups.resize(chunk_start[chunks]);  // keeps its storage from frame to frame
+    parallel_for(chunks, frame.threads, [&](size_t chunk) {
+        std::copy(chunk_setups[chunk].begin(), chunk_setups[chunk].end(), setups.begin() + chunk_start[chunk]);
+    });
     stats.rasterized = setups.size();
 }
 

@@ -238,7 +238,7 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
             if (resolver) resolver->resolve(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image->at(px, py));
         }
     }
-    if (!scratch.uniform_triangle.empty())
+    if (resolver && !scratch.uniform_triangle.empty())
         resolver->one_triangle_each(scratch.uniform_triangle.data(), scratch.uniform_bary.data(),
                                     scratch.uniform_out.data(), scratch.uniform_triangle.size());
     return covered;
