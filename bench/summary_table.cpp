@@ -13,7 +13,7 @@ namespace raster_bench {
 
 namespace {
 
-// The reported targets (not asserted): raster at most 1.0x llvmpipe's frame time on these, at 1 and 4 samples.
+// The reported targets (not asserted): raster at most 0.6x llvmpipe's frame time on these at 1 sample, 0.35x at 4.
 constexpr const char* kTargetScenes[] = {"teapot", "icosphere"};
 
 std::string format_number(double value) {
@@ -89,23 +89,29 @@ void print_summary(const SummaryReporter& reporter, const std::vector<std::uniqu
                 "MSAA (resolved by glBlitFramebuffer in its time). Both llvmpipe ratios at 4 samples are against\n"
                 "its 4x MSAA.\n");
 
-    // The targets, reported and never asserted: raster/llvmpipe wall-time ratio at most 1.0.
-    const RasterCase target_cases[] = {{1, false}, {4, true}};
-    std::printf("\nTargets (raster at most 1.0x llvmpipe's frame time, wall medians):\n");
+    // The targets, reported and never asserted: raster/llvmpipe wall-time ratio at most 0.6 at 1 sample and 0.35
+    // at 4 samples (MSAA against MSAA).
+    struct Target {
+        RasterCase c;
+        double ratio;
+    };
+    const Target targets[] = {{{1, false}, 0.6}, {{4, true}, 0.35}};
+    std::printf("\nTargets (raster at most 0.6x llvmpipe's frame time at 1 sample, 0.35x at 4, wall medians):\n");
     for (const auto& s : scenes) {
         if (std::none_of(std::begin(kTargetScenes), std::end(kTargetScenes),
                          [&](const char* name) { return s->name == name; }))
             continue;
-        for (const RasterCase& c : target_cases) {
+        for (const Target& target : targets) {
+            const RasterCase& c = target.c;
             const double r = ratio(reporter, *s, c, SummaryReporter::wall);
             std::printf("  %-10s %d sample%-6s %6s  %s\n", s->name.c_str(), c.samples,
                         c.msaa ? "s msaa" : "", format_number(r).c_str(),
-                        std::isnan(r) ? "not measured" : r <= 1.0 ? "met" : "missed");
+                        std::isnan(r) ? "not measured" : r <= target.ratio ? "met" : "missed");
         }
     }
 
-    // Against the Embree oracle at 16 samples: how many times faster raster's frame is (target: at least 20x).
-    std::printf("\nAgainst the Embree oracle at %d samples (its visibility only; target: raster at least 20x faster):\n",
+    // Against the Embree oracle at 16 samples: how many times faster raster's frame is (target: at least 25x with MSAA).
+    std::printf("\nAgainst the Embree oracle at %d samples (its visibility only; target: raster's MSAA at least 25x faster):\n",
                 kOracleSamples);
     std::printf("  %-10s %10s %14s %14s %12s %12s\n", "scene", "oracle ms", "raster ssaa ms", "raster msaa ms",
                 "ssaa speedup", "msaa speedup");
