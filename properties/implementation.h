@@ -13,7 +13,7 @@
 namespace raster::properties {
 
 // Which rasterizer a drawing property runs, and how: the reference full-frame rasterizer, or the tiled production
-// renderer (what `raster render` runs) with AVX2 or portable code, hierarchical Z on or off, on 1 or 2 threads.
+// renderer (what `raster render` runs) with SIMD coverage (Highway's best target) or its scalar fallback, hierarchical Z on or off, on 1 or 2 threads.
 struct Backend {
     std::string name;  // the gtest name suffix, e.g. "tiled_simd_hiz_2threads"
     RasterPath path = RasterPath::tiled;
@@ -26,7 +26,7 @@ struct Backend {
 // pair of values of any two of the axes SIMD x hierarchical Z x threads (a pairwise cover of the eight), the first
 // of them the production default.
 const std::vector<Backend>& drawing_backends();
-const Backend& production_backend();  // tiled, AVX2 where the CPU has it, hierarchical Z, 2 threads
+const Backend& production_backend();  // tiled, SIMD coverage, hierarchical Z, 2 threads
 const Backend& reference_backend();   // the reference rasterizer, 1 thread
 
 struct Implementation {

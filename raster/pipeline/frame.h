@@ -21,7 +21,7 @@ struct RenderOptions {
     int threads = 0;              // 0 = all cores; the output is the same for any value
     bool alpha = false;           // RGBA, alpha = covered fraction
     bool keep_visibility = true;  // the tiled renderer can skip filling the full-frame visibility buffer
-    bool allow_simd = true;       // AVX2 where the CPU has it; false forces the portable code (same bytes)
+    bool allow_simd = true;       // coverage on the CPU's best SIMD target; false: the scalar fallback (same bytes)
     RasterPath path = RasterPath::tiled;
 };
 

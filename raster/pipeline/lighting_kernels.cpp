@@ -163,13 +163,5 @@ void light_points(LightingBatch& batch, size_t first, size_t count, const Materi
     HWY_DYNAMIC_DISPATCH(LightPoints)(batch, first, count, material, lights, ambient_light, model, visibility);
 }
 
-std::vector<int64_t> lighting_targets() { return hwy::SupportedAndGeneratedTargets(); }
-
-std::string lighting_target_name(int64_t target) { return hwy::TargetName(target); }
-
-void force_lighting_target(int64_t target) {
-    hwy::GetChosenTarget().Update(target == 0 ? hwy::SupportedTargets() : target);
-}
-
 }  // namespace raster
 #endif  // HWY_ONCE

@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -44,11 +43,5 @@ void orient_points(LightingBatch& batch, size_t count, const glm::vec3& eye);
 void light_points(LightingBatch& batch, size_t first, size_t count, const Material& material,
                   const std::vector<Light>& lights, const glm::vec3& ambient_light, SpecularModel model,
                   const float* visibility);
-
-// The Highway targets this build dispatches to that the CPU runs (best first, the scalar fallback last), and
-// their names. force_lighting_target makes the kernels run on one of them (0: back to the best), for tests.
-std::vector<int64_t> lighting_targets();
-std::string lighting_target_name(int64_t target);
-void force_lighting_target(int64_t target);
 
 }  // namespace raster

@@ -2,6 +2,8 @@
 // of libhwy.so: that library calibrates a timer when it is loaded, which cost every `raster` process ~5-10 ms
 // (measured: an empty program linked with -lhwy takes 11 ms to run instead of 1). The dispatch tables, the
 // targets' code and ChosenTarget are Highway's own, from its headers.
+#include "raster/pipeline/simd_targets.h"
+
 #include <hwy/targets.h>
 
 namespace hwy {
@@ -50,3 +52,15 @@ ChosenTarget& GetChosenTarget() {
 }
 
 }  // namespace hwy
+
+namespace raster {
+
+std::vector<int64_t> simd_targets() { return hwy::SupportedAndGeneratedTargets(); }
+
+std::string simd_target_name(int64_t target) { return hwy::TargetName(target); }
+
+void force_simd_target(int64_t target) {
+    hwy::GetChosenTarget().Update(target == 0 ? hwy::SupportedTargets() : target);
+}
+
+}  // namespace raster

@@ -9,6 +9,7 @@
 
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
+#include "raster/pipeline/coverage_kernels.h"
 #include "raster/pipeline/front_end.h"
 #include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/resolve.h"
@@ -38,9 +39,9 @@ struct TileScratch {
     std::array<uint32_t, kBlocksPerTileSide * kBlocksPerTileSide> block_filled;  // non-empty samples per block
     size_t hidden_blocks = 0;                                               // blocks it skipped, this tile
     // For the samples of one block row, j = pixel * samples + sample: each edge's offset from the edge value at
-    // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the coverage flags.
+    // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the covered samples' bits.
     std::vector<int64_t> row_offset[3];
-    std::vector<uint8_t> row_covered;
+    std::vector<uint64_t> row_covered;
     std::vector<uint32_t> pixel_triangle;
     std::vector<glm::vec3> pixel_bary;
     // The tile's pixels wholly covered by one triangle, shaded together once the tile is read out.
@@ -70,14 +71,6 @@ inline double max_key_over(const TriangleSetup& t, const DepthPlane& depth, int 
     return largest;
 }
 
-// Coverage flags of the n samples of a block row. A plain loop over arrays, so that the AVX2 build of the caller
-// vectorizes it (four 64-bit lanes per instruction); integer arithmetic, so every build gives the same flags.
-inline void row_coverage(const int64_t (&base)[3], const int64_t* offset0, const int64_t* offset1,
-                         const int64_t* offset2, size_t n, uint8_t* covered) {
-    for (size_t j = 0; j < n; ++j)
-        covered[j] = ((base[0] + offset0[j]) | (base[1] + offset1[j]) | (base[2] + offset2[j])) >= 0;
-}
-
 // Samples of the block at (block_x0, block_y0) inside the image.
 inline uint32_t block_samples(const TileJob& job, int block_x0, int block_y0) {
     return static_cast<uint32_t>((std::min(block_x0 + kBlockSize, job.width) - block_x0) *
@@ -105,9 +98,10 @@ inline double block_min_key(const TileJob& job, const TileScratch& scratch, int 
 }
 
 // Rasterizes one setup into the tile: its bounding box clipped to the tile, in 8x8-pixel blocks that are
-// skipped when an edge keeps them entirely outside and taken whole when every edge keeps them inside.
-inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob& job, uint32_t index, int tile_x,
-                                                                  int tile_y, TileScratch& scratch) {
+// skipped when an edge keeps them entirely outside and taken whole when every edge keeps them inside. A partly
+// covered block row's samples are found by the coverage kernel (coverage_kernels.h), SIMD when allowed.
+void rasterize_in_tile(const TileJob& job, uint32_t index, int tile_x, int tile_y, TileScratch& scratch,
+                       bool allow_simd) {
     const TriangleSetup& t = job.setups[index];
     const int F = job.fixed_bits, S = job.samples;
     const int x0 = std::max(t.min_x, tile_x), x1 = std::min(t.max_x, tile_x + kTileSize - 1);
@@ -120,7 +114,7 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
                     (t.a[i] * k << F) + t.a[i] * job.offsets.x[s] + t.b[i] * job.offsets.y[s] + t.bias[i];
     }
     const DepthPlane depth(t);
-    uint8_t* covered = scratch.row_covered.data();
+    uint64_t* covered = scratch.row_covered.data();
     for (int by = y0; by <= y1; by = (by / kBlockSize + 1) * kBlockSize) {
         const int block_y1 = std::min(y1, (by / kBlockSize + 1) * kBlockSize - 1);
         for (int bx = x0; bx <= x1; bx = (bx / kBlockSize + 1) * kBlockSize) {
@@ -148,16 +142,21 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
             }
             bool wrote = false;
             const size_t n = static_cast<size_t>(block_x1 - bx + 1) * S;
-            if (accept) std::fill(covered, covered + n, uint8_t{1});
+            const size_t words = coverage_words(n);
+            if (accept) {
+                std::fill(covered, covered + words, ~uint64_t{0});
+                if (n % 64) covered[words - 1] = (uint64_t{1} << (n % 64)) - 1;
+            }
             for (int py = by; py <= block_y1; ++py) {
                 int64_t base[3];
                 for (int i = 0; i < 3; ++i) base[i] = t.a[i] * (int64_t{bx} << F) + t.b[i] * (int64_t{py} << F) + t.c[i];
                 if (!accept)
-                    row_coverage(base, scratch.row_offset[0].data(), scratch.row_offset[1].data(),
-                                 scratch.row_offset[2].data(), n, covered);
+                    coverage_bits(base, scratch.row_offset[0].data(), scratch.row_offset[1].data(),
+                                  scratch.row_offset[2].data(), n, covered, allow_simd);
                 const size_t row_start = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(bx - tile_x)) * S;
-                for (size_t j = 0; j < n; ++j) {
-                    if (!covered[j]) continue;
+                for (size_t word = 0; word < words; ++word)
+                for (uint64_t bits = covered[word]; bits; bits &= bits - 1) {
+                    const size_t j = word * 64 + static_cast<size_t>(__builtin_ctzll(bits));
                     const int64_t e1 = base[1] + scratch.row_offset[1][j] - t.bias[1];
                     const int64_t e2 = base[2] + scratch.row_offset[2][j] - t.bias[2];
                     const DepthTestResult test =
@@ -174,15 +173,6 @@ inline __attribute__((always_inline)) void rasterize_in_tile_body(const TileJob&
             }
         }
     }
-}
-
-__attribute__((target("avx2"))) void rasterize_in_tile_avx2(const TileJob& job, uint32_t index, int tile_x, int tile_y,
-                                                            TileScratch& scratch) {
-    rasterize_in_tile_body(job, index, tile_x, tile_y, scratch);
-}
-
-void rasterize_in_tile_portable(const TileJob& job, uint32_t index, int tile_x, int tile_y, TileScratch& scratch) {
-    rasterize_in_tile_body(job, index, tile_x, tile_y, scratch);
 }
 
 // Shades the tile's pixels into the image and, when kept, writes its samples into the visibility buffer.
@@ -257,7 +247,7 @@ int64_t nanoseconds_between(Clock::time_point from, Clock::time_point to) {
 // setups rasterized in draw order, then finish(tile_x, tile_y, scratch) reads the planes out. A tile without
 // setups gets empty(tile_x, tile_y) instead when skip_empty_tiles is set (its planes are already clear).
 template <class Finish, class Empty>
-void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, bool use_avx2, bool skip_empty_tiles,
+void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, bool allow_simd, bool skip_empty_tiles,
                          TileTimes& times, Finish&& finish, Empty&& empty) {
     const int samples = job.samples;
     parallel_for(bins.setups.size(), threads, [&](size_t tile) {
@@ -267,8 +257,9 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
         scratch.depth.resize(plane);
         // An empty tile needs its planes cleared only once per thread; a tile that had triangles clears them.
         if (scratch.winner.size() != plane) scratch.winner.assign(plane, kNoTriangle);
-        for (auto& offset : scratch.row_offset) offset.resize(static_cast<size_t>(kBlockSize) * samples);
-        scratch.row_covered.resize(static_cast<size_t>(kBlockSize) * samples);
+        const size_t row = static_cast<size_t>(kBlockSize) * samples + kCoveragePadding;
+        for (auto& offset : scratch.row_offset) offset.resize(row);
+        scratch.row_covered.resize(coverage_words(row));
         scratch.pixel_triangle.resize(static_cast<size_t>(samples));
         scratch.pixel_bary.resize(static_cast<size_t>(samples));
         const int tile_x = static_cast<int>(tile % bins.tiles_x) * kTileSize;
@@ -281,10 +272,7 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
             times.shade_ns += nanoseconds_between(tile_start, Clock::now());
             return;
         }
-        for (uint32_t index : bins.setups[tile]) {
-            if (use_avx2) rasterize_in_tile_avx2(job, index, tile_x, tile_y, scratch);
-            else rasterize_in_tile_portable(job, index, tile_x, tile_y, scratch);
-        }
+        for (uint32_t index : bins.setups[tile]) rasterize_in_tile(job, index, tile_x, tile_y, scratch, allow_simd);
         const auto finish_start = Clock::now();
         finish(tile_x, tile_y, scratch);
         if (!bins.setups[tile].empty()) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
@@ -293,8 +281,6 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
         times.shade_ns += nanoseconds_between(finish_start, tile_end);
     });
 }
-
-bool avx2_allowed(bool allow_simd) { return allow_simd && __builtin_cpu_supports("avx2"); }
 
 }  // namespace
 
@@ -331,7 +317,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
     std::atomic<size_t> covered{0}, hidden{0};
     TileTimes times;
     rasterize_each_tile(
-        job, bins, options.threads, avx2_allowed(options.allow_simd), !visibility, times,
+        job, bins, options.threads, options.allow_simd, !visibility, times,
         [&](int tile_x, int tile_y, TileScratch& scratch) {
             covered += resolve_tile(job, tile_x, tile_y, &resolver, settings.msaa, scratch, &image, visibility);
             hidden += scratch.hidden_blocks;
@@ -364,7 +350,7 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
     std::atomic<size_t> hidden{0};
     TileTimes times;
     rasterize_each_tile(
-        job, bins, frame.threads, avx2_allowed(allow_simd), false, times,
+        job, bins, frame.threads, allow_simd, false, times,
         [&](int tile_x, int tile_y, TileScratch& scratch) {
             resolve_tile(job, tile_x, tile_y, nullptr, false, scratch, nullptr, &visibility);
             hidden += scratch.hidden_blocks;
@@ -389,7 +375,7 @@ void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const Frame
     };
     TileTimes times;
     rasterize_each_tile(
-        job, bins, frame.threads, avx2_allowed(allow_simd), true, times,
+        job, bins, frame.threads, allow_simd, true, times,
         [&](int tile_x, int tile_y, TileScratch& scratch) {
             each_sample(tile_x, tile_y, [&](int px, int py, int s) {
                 const size_t at =

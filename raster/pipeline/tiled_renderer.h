@@ -18,8 +18,8 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
 
 // The tiled renderer's coverage and depth alone, on setups made elsewhere (the properties draw hand-made
 // triangles through it): the same binning, block tests, hierarchical Z (frame.hierarchical_z), traversal and
-// visibility-buffer writes as render_tiled_into with keep_visibility, on frame.threads threads, with AVX2 unless
-// allow_simd is false. Returns the number of (triangle, block) pairs hierarchical Z skipped.
+// visibility-buffer writes as render_tiled_into with keep_visibility, on frame.threads threads, coverage in SIMD
+// unless allow_simd is false (the scalar fallback). Returns the number of (triangle, block) pairs hierarchical Z skipped.
 size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
                        VisibilityBuffer& visibility);
 

@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "raster/pipeline/lighting.h"
+#include "raster/pipeline/simd_targets.h"
+#include "tests/support/pinned_simd_target.h"
 
 namespace raster {
 namespace {
@@ -82,30 +84,28 @@ bool same_bits(const LightingBatch& a, const LightingBatch& b, std::string& wher
     return true;
 }
 
-struct ResetTarget {
-    ~ResetTarget() { force_lighting_target(0); }
-};
-
 TEST(LightingKernels, everyTargetTheCpuRunsGivesTheScalarFallbacksBits) {
-    const ResetTarget reset;
-    const std::vector<int64_t> targets = lighting_targets();
+    const std::vector<int64_t> targets = simd_targets();
     ASSERT_GE(targets.size(), 1u);
-    const std::string fallback = lighting_target_name(targets.back());
+    const std::string fallback = simd_target_name(targets.back());
     EXPECT_TRUE(fallback == "EMU128" || fallback == "SCALAR") << "the last target is " << fallback;
     std::printf("lighting targets this CPU runs:");
-    for (const int64_t target : targets) std::printf(" %s", lighting_target_name(target).c_str());
+    for (const int64_t target : targets) std::printf(" %s", simd_target_name(target).c_str());
     std::printf("\n");
     for (const float exponent : {40.0f, 0.0f, 2.5f, 300.0f})
         for (const SpecularModel model : {SpecularModel::blinn, SpecularModel::phong})
             for (const bool with_visibility : {false, true}) {
                 const Case c = random_case(static_cast<uint32_t>(exponent * 7) + 1, exponent);
-                force_lighting_target(targets.back());
-                const LightingBatch expected = lit(c, model, with_visibility);
+                LightingBatch expected;
+                {
+                    const test_support::PinnedSimdTarget fallback_only(targets.back());
+                    expected = lit(c, model, with_visibility);
+                }
                 for (const int64_t target : targets) {
-                    force_lighting_target(target);
+                    const test_support::PinnedSimdTarget pinned(target);
                     std::string where;
                     EXPECT_TRUE(same_bits(lit(c, model, with_visibility), expected, where))
-                        << lighting_target_name(target) << " differs from " << fallback << " at " << where
+                        << simd_target_name(target) << " differs from " << fallback << " at " << where
                         << " (exponent " << exponent << ", model " << int(model) << ")";
                 }
             }

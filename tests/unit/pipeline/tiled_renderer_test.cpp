@@ -64,7 +64,7 @@ TEST(TiledRender, matchesTheReferencePathByteForByte) {
             ASSERT_EQ(tiled.visibility.triangle, reference.visibility.triangle) << entry.path();
             ASSERT_EQ(tiled.visibility.view_depth, reference.visibility.view_depth) << entry.path();
             EXPECT_EQ(tiled.stats.covered_samples, reference.stats.covered_samples) << entry.path();
-            // The portable build of the inner loops gives the AVX2 build's bytes.
+            // The scalar coverage kernel gives the SIMD one's bytes.
             RenderOptions portable = options;
             portable.allow_simd = false;
             RenderResult scalar;
