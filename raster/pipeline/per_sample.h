@@ -44,19 +44,20 @@ struct SampleHit {
 // Screen-space barycentrics l_i = E_i / area2, perspective-corrected by 1/w (m_i = l_i / w_i, normalised), then
 // mapped through the setup vertices' barycentrics in the original triangle; view depth = 1 / sum(l_i / w_i).
 // An affine setup (Interpolation::affine) skips the correction: barycentrics l_i / sum(l), view depth
-// sum(l_i w_i) / sum(l), both linear in screen space.
+// sum(l_i w_i) / sum(l), both linear in screen space (sum(l) is 1 up to rounding with fixed edges, not with float
+// ones). One division per sample: the area's reciprocal and the vertices' w come from setup.
 inline SampleHit interpolate_hit(const TriangleSetup& t, int64_t X, int64_t Y) {
-    const double inv_area = 1.0 / static_cast<double>(t.area2);
     double weight[3], total = 0.0, affine_depth = 0.0;
     for (int i = 0; i < 3; ++i) {
-        const double l = static_cast<double>(t.a[i] * X + t.b[i] * Y + t.c[i]) * inv_area;
+        const double l = static_cast<double>(t.a[i] * X + t.b[i] * Y + t.c[i]) * t.inv_area2;
         weight[i] = t.affine ? l : l * static_cast<double>(t.inv_w[i]);
-        if (t.affine) affine_depth += l / static_cast<double>(t.inv_w[i]);
+        if (t.affine) affine_depth += l * t.vertex_depth[i];
         total += weight[i];
     }
+    const double inv_total = 1.0 / total;
     glm::dvec3 bary(0.0);
-    for (int i = 0; i < 3; ++i) bary += (weight[i] / total) * glm::dvec3(t.bary[i]);
-    return {glm::vec3(bary), static_cast<float>(t.affine ? affine_depth / total : 1.0 / total)};
+    for (int i = 0; i < 3; ++i) bary += (weight[i] * inv_total) * glm::dvec3(t.bary[i]);
+    return {glm::vec3(bary), static_cast<float>(t.affine ? affine_depth * inv_total : inv_total)};
 }
 
 // The exact coverage test of one sample at fixed-point position (X, Y), shared by the rasterizer and its tests.

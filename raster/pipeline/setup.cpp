@@ -100,6 +100,7 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Fra
         TriangleSetup setup;
         setup.triangle_id = triangle_id;
         setup.area2 = area2;
+        setup.inv_area2 = 1.0 / static_cast<double>(area2);
         setup.affine = frame.interpolation == Interpolation::affine;
         setup.depth_fixed24 = frame.depth == DepthFormat::fixed24;
         for (int i = 0; i < 3; ++i) {
@@ -107,6 +108,7 @@ int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const Fra
             setup.y[i] = v[i]->y;
             setup.depth[i] = v[i]->depth;
             setup.inv_w[i] = v[i]->inv_w;
+            if (setup.affine) setup.vertex_depth[i] = 1.0 / static_cast<double>(v[i]->inv_w);
             setup.bary[i] = v[i]->bary;
         }
         for (int i = 0; i < 3; ++i) {

@@ -24,9 +24,11 @@ struct TriangleSetup {
     int64_t a[3] = {}, b[3] = {}, c[3] = {};
     int64_t bias[3] = {};
     int64_t area2 = 0;           // twice the snapped area, > 0
+    double inv_area2 = 0.0;      // 1 / area2
     int min_x = 0, min_y = 0, max_x = -1, max_y = -1;  // pixel bounding box, inclusive, inside the viewport
     double depth[3] = {};        // the depth test's key at each vertex, larger is nearer (depth_key)
     float inv_w[3] = {};         // 1 / view depth at each vertex
+    double vertex_depth[3] = {}; // affine setups only: view depth at each vertex, 1 / inv_w
     glm::vec3 bary[3];           // each vertex's barycentric coordinates in the original triangle
     bool affine = false;         // Interpolation::affine: barycentrics linear in screen space
     bool depth_fixed24 = false;  // DepthFormat::fixed24: the interpolated key is rounded to an integer
