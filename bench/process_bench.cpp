@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "bench/benchmark_flags.h"
+
 extern char** environ;
 
 namespace {
@@ -56,15 +58,11 @@ public:
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string repetitions = "--benchmark_repetitions=7";
-    std::string aggregates_only = "--benchmark_report_aggregates_only=true";
-    std::string interleave = "--benchmark_enable_random_interleaving=true";
-    std::vector<char*> args{argv[0], repetitions.data(), aggregates_only.data(), interleave.data()};
-    for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
-    int arg_count = static_cast<int>(args.size());
-    args.push_back(nullptr);
-    benchmark::Initialize(&arg_count, args.data());
-    if (benchmark::ReportUnrecognizedArguments(arg_count, args.data())) return 1;
+    if (!raster_bench::initialize_benchmark(argv[0],
+                                            {"--benchmark_repetitions=7", "--benchmark_report_aggregates_only=true",
+                                             "--benchmark_enable_random_interleaving=true"},
+                                            std::vector<char*>(argv + 1, argv + argc)))
+        return 1;
 
     const std::filesystem::path out_dir =
         std::filesystem::temp_directory_path() / ("process_bench-" + std::to_string(::getpid()));

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bench/bench_scenes.h"
+#include "bench/benchmark_flags.h"
 #include "bench/peer_benchmarks.h"
 #include "bench/raster_benchmark.h"
 #include "bench/summary_table.h"
@@ -20,18 +21,15 @@
 using namespace raster_bench;
 
 int main(int argc, char** argv) {
-    // Defaults first so that the user's flags, parsed later, win. Interleaving the repetitions of raster and
-    // llvmpipe in random order spreads slow drifts in machine load over both instead of charging one.
-    std::string repetitions = "--benchmark_repetitions=7";
-    std::string aggregates_only = "--benchmark_report_aggregates_only=true";
-    std::string interleave = "--benchmark_enable_random_interleaving=true";
-    std::vector<char*> args{argv[0], repetitions.data(), aggregates_only.data(), interleave.data()};
-    for (int i = 1; i < argc; ++i) args.push_back(argv[i]);
-    const std::vector<std::string> wanted = take_scenes_flag(args);
-    int arg_count = static_cast<int>(args.size());
-    args.push_back(nullptr);
-    benchmark::Initialize(&arg_count, args.data());
-    if (benchmark::ReportUnrecognizedArguments(arg_count, args.data())) return 1;
+    // Interleaving the repetitions of raster and llvmpipe in random order spreads slow drifts in machine load over
+    // both instead of charging one.
+    std::vector<char*> flags(argv + 1, argv + argc);
+    const std::vector<std::string> wanted = take_scenes_flag(flags);
+    if (!initialize_benchmark(argv[0],
+                              {"--benchmark_repetitions=7", "--benchmark_report_aggregates_only=true",
+                               "--benchmark_enable_random_interleaving=true"},
+                              flags))
+        return 1;
 
     for (const std::string& name : wanted)
         if (std::none_of(std::begin(kSceneSpecs), std::end(kSceneSpecs),

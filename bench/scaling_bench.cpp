@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/benchmark_flags.h"
 #include "bench/scaling_plot.h"
 #include "raster/core/file_io.h"
 #include "raster/pipeline/render.h"
@@ -99,17 +100,14 @@ public:
 
 int main(int argc, char** argv) {
     std::string svg_path = "scaling.svg";
-    std::string repetitions = "--benchmark_repetitions=5";
-    std::string aggregates_only = "--benchmark_report_aggregates_only=true";
-    std::vector<char*> args{argv[0], repetitions.data(), aggregates_only.data()};
+    std::vector<char*> flags;
     for (int i = 1; i < argc; ++i) {
         if (std::strncmp(argv[i], "--svg=", 6) == 0) svg_path = argv[i] + 6;
-        else args.push_back(argv[i]);
+        else flags.push_back(argv[i]);
     }
-    int arg_count = static_cast<int>(args.size());
-    args.push_back(nullptr);
-    benchmark::Initialize(&arg_count, args.data());
-    if (benchmark::ReportUnrecognizedArguments(arg_count, args.data())) return 1;
+    if (!raster_bench::initialize_benchmark(
+            argv[0], {"--benchmark_repetitions=5", "--benchmark_report_aggregates_only=true"}, flags))
+        return 1;
 
     std::vector<std::unique_ptr<raster::Scene>> scenes;
     auto add = [&](const std::string& name, int triangles, int size) {
