@@ -1,5 +1,6 @@
 // The tiled fast path gives the reference path's bytes: the same image and visibility buffer on every corpus
-// scene, sample count, pattern, MSAA, alpha, thread count and precision mode.
+// scene, sample count, pattern, MSAA, alpha, thread count and precision mode; and the same bytes on every SIMD
+// target the CPU runs.
 #include "raster/pipeline/tiled_renderer.h"
 
 #include <filesystem>
@@ -8,6 +9,8 @@
 
 #include "raster/formats/scene_loader.h"
 #include "raster/pipeline/render.h"
+#include "raster/pipeline/simd_targets.h"
+#include "tests/support/pinned_simd_target.h"
 
 namespace raster {
 namespace {
@@ -82,6 +85,38 @@ TEST(TiledRender, matchesTheReferencePathByteForByte) {
         }
     }
     EXPECT_GE(compared, 6 * 6);
+}
+
+TEST(TiledRender, everySimdTargetTheCpuRunsGivesTheScalarFallbacksBytes) {
+    // The production path end to end (lighting and coverage kernels), pinned to each target in turn: Blinn-Phong
+    // and Phong with textures, shadows and glass, at 1 sample and 4x MSAA.
+    const std::vector<int64_t> targets = simd_targets();
+    ASSERT_GE(targets.size(), 1u);
+    int compared = 0;
+    for (const char* name : {"teapot.yaml", "shadows_and_glass.yaml", "textured_cube.yaml"}) {
+        for (const bool msaa : {false, true}) {
+            Scene scene = load_scene(kCorpus + name);
+            scene.settings.samples = msaa ? 4 : 1;
+            scene.settings.msaa = msaa;
+            if (std::string(name) == "teapot.yaml") scene.settings.shading = ShadingMode::phong;
+            RenderOptions options;
+            options.threads = 2;
+            RenderResult expected;
+            {
+                const test_support::PinnedSimdTarget fallback_only(targets.back());
+                render_tiled_into(scene, options, PipelineStages{}, expected);
+            }
+            for (const int64_t target : targets) {
+                const test_support::PinnedSimdTarget pinned(target);
+                RenderResult result;
+                render_tiled_into(scene, options, PipelineStages{}, result);
+                ASSERT_EQ(result.image.pixels, expected.image.pixels)
+                    << name << (msaa ? " msaa" : "") << " on " << simd_target_name(target);
+                ++compared;
+            }
+        }
+    }
+    EXPECT_GE(compared, 6);
 }
 
 }  // namespace
