@@ -51,12 +51,15 @@ void parallel_for(size_t count, int threads, const std::function<void(size_t)>& 
     }
     // Grain 1 with the simple partitioner: every index is its own task, taken by whichever thread is free (tiles
     // differ widely in cost). TBB cancels the rest and rethrows the first exception here.
+    // Isolated: a thread waiting here never takes up another call's work, whose per-thread scratch it may hold.
     arena_for(static_cast<int>(workers)).execute([&] {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1),
+        tbb::this_task_arena::isolate([&] {
+            tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1),
                           [&](const tbb::blocked_range<size_t>& range) {
                               for (size_t i = range.begin(); i != range.end(); ++i) fn(i);
                           },
                           tbb::simple_partitioner());
+        });
     });
 }
 

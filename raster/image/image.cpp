@@ -58,8 +58,10 @@ std::vector<uint8_t> encode_image(const Image& image, ImageFormat format) {
     std::vector<uint8_t> bytes;
     if (format == ImageFormat::png) {
         // Every row unfiltered: stb otherwise tries all five filters on every row, which costs more than the
-        // deflate; on rendered frames the filters saved under 7% of the file (tried on the bench scenes).
-        stbi_write_force_png_filter = 0;
+        // deflate; on rendered frames the filters saved under 7% of the file (tried on the bench scenes). Set once,
+        // so that threads encoding at the same time do not race on stb's global.
+        static const bool unfiltered = (stbi_write_force_png_filter = 0, true);
+        (void)unfiltered;
         if (!stbi_write_png_to_func(append_to_vector, &bytes, image.width, image.height, image.channels,
                                     image.pixels.data(), image.width * image.channels))
             throw std::runtime_error("PNG encoding failed");

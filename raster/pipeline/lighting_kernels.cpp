@@ -105,7 +105,7 @@ void LightPoints(LightingBatch& batch, size_t first, size_t count, const Materia
             const V n_dot_l = dot(normal, to_light);
             // The light adds nothing where it sits on the point, lies behind the surface, or is in shadow.
             const auto arrives = hn::And(hn::And(hn::Gt(distance_squared, zero), hn::Gt(n_dot_l, zero)),
-                                         hn::Ne(visible, zero));
+                                         hn::Not(hn::Eq(visible, zero)));  // Eq: NaN-safe on every target
             V lobe;
             if (model == SpecularModel::blinn) {
                 const Vec3 half{hn::Add(to_light.x, to_eye.x), hn::Add(to_light.y, to_eye.y),

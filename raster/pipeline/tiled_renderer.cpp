@@ -38,6 +38,7 @@ struct TileScratch {
     std::array<double, kBlocksPerTileSide * kBlocksPerTileSide> block_far;  // hierarchical Z bounds
     std::array<uint32_t, kBlocksPerTileSide * kBlocksPerTileSide> block_filled;  // non-empty samples per block
     size_t hidden_blocks = 0;                                               // blocks it skipped, this tile
+    bool winner_dirty = false;  // `winner` holds a tile's triangles: cleared after the tile, or before the next
     // For the samples of one block row, j = pixel * samples + sample: each edge's offset from the edge value at
     // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the covered samples' bits.
     std::vector<int64_t> row_offset[3];
@@ -255,8 +256,10 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
         thread_local TileScratch scratch;
         const size_t plane = static_cast<size_t>(kTileSize) * kTileSize * samples;
         scratch.depth.resize(plane);
-        // An empty tile needs its planes cleared only once per thread; a tile that had triangles clears them.
-        if (scratch.winner.size() != plane) scratch.winner.assign(plane, kNoTriangle);
+        // An empty tile needs its planes cleared only once per thread; a tile that had triangles clears them
+        // (or, when it threw before it could, the next tile on the thread does).
+        if (scratch.winner.size() != plane || scratch.winner_dirty) scratch.winner.assign(plane, kNoTriangle);
+        scratch.winner_dirty = false;
         const size_t row = static_cast<size_t>(kBlockSize) * samples + kCoveragePadding;
         for (auto& offset : scratch.row_offset) offset.resize(row);
         scratch.row_covered.resize(coverage_words(row));
@@ -272,10 +275,12 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
             times.shade_ns += nanoseconds_between(tile_start, Clock::now());
             return;
         }
+        scratch.winner_dirty = !bins.setups[tile].empty();
         for (uint32_t index : bins.setups[tile]) rasterize_in_tile(job, index, tile_x, tile_y, scratch, allow_simd);
         const auto finish_start = Clock::now();
         finish(tile_x, tile_y, scratch);
-        if (!bins.setups[tile].empty()) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
+        if (scratch.winner_dirty) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
+        scratch.winner_dirty = false;
         const auto tile_end = Clock::now();
         times.raster_ns += nanoseconds_between(tile_start, finish_start);
         times.shade_ns += nanoseconds_between(finish_start, tile_end);
