@@ -144,9 +144,13 @@ const float* Shader::visibility_at(uint32_t triangle, const glm::vec3& bary) con
     const TriangleIndices& v = geometry_.triangles[triangle];
     glm::vec3 position(0.0f);
     for (int i = 0; i < 3; ++i) position += bary[i] * geometry_.world_position[v.v[i]];
-    for (size_t light : shadowed_lights_)
-        visibility[light] = shadows_->visibility(light, position, face_normal_[triangle]);
+    shadow_visibility(triangle, position, visibility.data(), 1);
     return visibility.data();
+}
+
+void Shader::shadow_visibility(uint32_t triangle, const glm::vec3& position, float* out, size_t stride) const {
+    for (size_t light : shadowed_lights_)
+        out[light * stride] = shadows_->visibility(light, position, face_normal_[triangle]);
 }
 
 glm::vec3 Shader::base_color(uint32_t triangle, const glm::vec3& bary) const {
@@ -214,9 +218,7 @@ void Shader::light_batch(const uint32_t* triangle, const glm::vec3* bary, size_t
         visibility.assign(scene_.lights.size() * LightingBatch::kRow, 1.0f);
         for (size_t j = 0; j < count; ++j) {
             const glm::vec3 position(batch.position[0][j], batch.position[1][j], batch.position[2][j]);
-            for (size_t light : shadowed_lights_)
-                visibility[light * LightingBatch::kRow + j] =
-                    shadows_->visibility(light, position, face_normal_[triangle[j]]);
+            shadow_visibility(triangle[j], position, visibility.data() + j, LightingBatch::kRow);
         }
     }
     for (size_t first = 0, end; first < count; first = end) {  // runs of one material

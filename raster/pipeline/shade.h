@@ -60,6 +60,9 @@ private:
     // Every scene light's visibility at the point (1 for a light without shadows), in a per-thread buffer; null
     // without shadow maps.
     const float* visibility_at(uint32_t triangle, const glm::vec3& bary) const;
+    // Each shadowed light's visibility at `position` on `triangle`, into out[light * stride]; the other lights'
+    // entries are left as they are.
+    void shadow_visibility(uint32_t triangle, const glm::vec3& position, float* out, size_t stride) const;
     // Lit terms for flat and Gouraud at a point: terms_stride_ entries into `out`.
     void lit_terms(const glm::vec3& position, const glm::vec3& normal, const Material& material,
                    LightingTerms* out) const;
