@@ -54,6 +54,11 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
     render_options.keep_visibility = true;
     out.raster = render(scene, render_options, stages);
     out.raster_ms = out.raster.stats.ms_total;
+    // The colours are judged on the frame `raster render` writes, which keeps no visibility buffer and so shades
+    // through its batched path; the visibility buffer above is only for the per-sample visibility check.
+    RenderOptions image_options = render_options;
+    image_options.keep_visibility = false;
+    out.raster.image = render(scene, image_options, stages).image;
 
     auto start = Clock::now();
     const oracle::OracleScene geometry = oracle::oracle_scene(scene);
