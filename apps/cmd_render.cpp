@@ -112,8 +112,8 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
         frame_ms.push_back(result.stats.ms_total);
     }
     try {
-        write_image(output, depth_task ? depth_image(result.visibility) : result.image);
-        if (!flags.depth_out.empty()) write_image(flags.depth_out, depth_image(result.visibility));
+        write_image(output, depth_task ? depth_image(result.visibility) : result.image, options.threads);
+        if (!flags.depth_out.empty()) write_image(flags.depth_out, depth_image(result.visibility), options.threads);
     } catch (const std::exception& error) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitIoError;

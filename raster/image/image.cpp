@@ -8,22 +8,28 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include <zlib.h>
+#include "raster/image/zlib_stream.h"
 
 namespace {
 
+// The threads the PNG being encoded on this thread may deflate on: stb's compression hook takes no context.
+thread_local int png_deflate_threads = 0;
+
 // stb_image_write's own deflate takes ~90 ms for an 800x800 frame, longer than the frame; zlib at level 1 does it
-// in ~14 ms, and its files are no larger than stb's at its default level. stb frees the result with free().
+// in ~14 ms on one thread, and its files are no larger than stb's at its default level; chunks on several threads
+// (zlib_stream.h) divide that. stb frees the result with free().
 unsigned char* zlib_compress(unsigned char* data, int length, int* out_length, int /*stb's quality*/) {
-    uLongf bound = compressBound(static_cast<uLong>(length));
-    auto* out = static_cast<unsigned char*>(std::malloc(bound));
-    if (!out) return nullptr;
-    if (compress2(out, &bound, data, static_cast<uLong>(length), 1) != Z_OK) {
-        std::free(out);
-        return nullptr;
+    try {
+        const std::vector<uint8_t> stream =
+            raster::zlib_compress_chunked(data, static_cast<size_t>(length), 1, png_deflate_threads);
+        auto* out = static_cast<unsigned char*>(std::malloc(stream.size()));
+        if (!out) return nullptr;
+        std::copy(stream.begin(), stream.end(), out);
+        *out_length = static_cast<int>(stream.size());
+        return out;
+    } catch (const std::exception&) {
+        return nullptr;  // stb reports the failure; encode_image throws
     }
-    *out_length = static_cast<int>(bound);
-    return out;
 }
 
 }  // namespace
@@ -54,7 +60,7 @@ void append_to_vector(void* context, void* data, int size) {
 
 }  // namespace
 
-std::vector<uint8_t> encode_image(const Image& image, ImageFormat format) {
+std::vector<uint8_t> encode_image(const Image& image, ImageFormat format, int threads) {
     std::vector<uint8_t> bytes;
     if (format == ImageFormat::png) {
         // Every row unfiltered: stb otherwise tries all five filters on every row, which costs more than the
@@ -62,6 +68,7 @@ std::vector<uint8_t> encode_image(const Image& image, ImageFormat format) {
         // so that threads encoding at the same time do not race on stb's global.
         static const bool unfiltered = (stbi_write_force_png_filter = 0, true);
         (void)unfiltered;
+        png_deflate_threads = threads;
         if (!stbi_write_png_to_func(append_to_vector, &bytes, image.width, image.height, image.channels,
                                     image.pixels.data(), image.width * image.channels))
             throw std::runtime_error("PNG encoding failed");
@@ -83,8 +90,8 @@ std::vector<uint8_t> encode_image(const Image& image, ImageFormat format) {
     return bytes;
 }
 
-void write_image(const std::filesystem::path& path, const Image& image) {
-    write_file_atomically(path, encode_image(image, image_format_for(path)));
+void write_image(const std::filesystem::path& path, const Image& image, int threads) {
+    write_file_atomically(path, encode_image(image, image_format_for(path), threads));
 }
 
 }  // namespace raster

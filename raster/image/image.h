@@ -26,10 +26,11 @@ enum class ImageFormat { png, ppm };
 // The format a file name asks for: ".ppm" gives PPM, anything else PNG.
 ImageFormat image_format_for(const std::filesystem::path& path);
 
-// Encodes the image. PPM is binary P6 (RGB; alpha is dropped) or P5 for grey.
-std::vector<uint8_t> encode_image(const Image& image, ImageFormat format);
+// Encodes the image. PPM is binary P6 (RGB; alpha is dropped) or P5 for grey. PNG's deflate runs on up to
+// `threads` threads (0 = all cores; zlib_stream.h); the bytes do not depend on the count.
+std::vector<uint8_t> encode_image(const Image& image, ImageFormat format, int threads = 0);
 
 // encode_image + write_file_atomically, in the format the extension asks for.
-void write_image(const std::filesystem::path& path, const Image& image);
+void write_image(const std::filesystem::path& path, const Image& image, int threads = 0);
 
 }  // namespace raster
