@@ -25,8 +25,11 @@ Command add_compare_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_tradeoff_command(CLI::App& app);
 Command add_balboa_command(CLI::App& app);
-// `raster view`, in its own module raster_viewer (it links cpp-httplib), which only the `raster` program links and
-// registers (main.cpp, through run()'s extra commands).
+// `raster view`, in its own module raster_viewer (it links cpp-httplib), which only the viewer program, raster-view,
+// links and registers (view_main.cpp, through run()'s extra commands).
 Command add_view_command(CLI::App& app);
+// `raster view` in the `raster` program (main.cpp): the same flags, checked, then the viewer program run in this
+// process's place on the same arguments (cmd_view_forward.cpp).
+Command add_view_forwarding_command(CLI::App& app);
 
 }  // namespace raster::cli

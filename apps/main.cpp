@@ -1,4 +1,5 @@
-// Entry point of the `raster` program: hands argv to the command-line layer, with `view` when it is built.
+// Entry point of the `raster` program: hands argv to the command-line layer, with `view` (which runs the viewer
+// program, raster-view) when it is built.
 #include <iostream>
 
 #include "apps/cli.h"
@@ -8,7 +9,7 @@ int main(int argc, char** argv) {
     std::ios::sync_with_stdio(false);
     std::vector<raster::cli::CommandRegistrar> extra_commands;
 #ifdef RASTER_WITH_VIEWER
-    extra_commands.push_back(raster::cli::add_view_command);
+    extra_commands.push_back(raster::cli::add_view_forwarding_command);
 #endif
     return raster::cli::run(std::vector<std::string>(argv, argv + argc), std::cout, std::cerr, extra_commands);
 }

@@ -1,5 +1,6 @@
-// `raster view` as a process: the URL on stdout, exit 0 on SIGINT and SIGTERM, 1 on a port in use, 2 on a bad
-// scene, and over HTTP: plain-text refusals of bad requests, a server that keeps serving, one log line a request.
+// `raster view` as a process (raster-view run in raster's place): the URL on stdout, exit 0 on SIGINT and SIGTERM,
+// 1 on a port in use, 2 on a bad scene or a missing viewer program, and over HTTP: plain-text refusals of bad
+// requests, a server that keeps serving, one log line a request.
 #include <signal.h>
 
 #include <chrono>
@@ -65,6 +66,20 @@ TEST(ViewerProcess, aBadSceneOrFlagExitsTwoBeforeServing) {
     RunningViewer port = start_raster({"view", kTeapot, "--port", "65536"}, dir / "port.txt");
     EXPECT_EQ(port.process->wait(seconds(20)), 2);
     EXPECT_NE(port.log().find("--port"), std::string::npos) << port.log();
+}
+
+// `raster view` runs the viewer program beside `raster`; a `raster` without it says which file is missing.
+TEST(ViewerProcess, aRasterWithoutTheViewerProgramBesideItExitsTwoNamingIt) {
+    TempDir dir;
+    const std::filesystem::path lone = dir / "raster";
+    std::filesystem::copy_file(RASTER_BINARY, lone);
+    std::filesystem::permissions(lone, std::filesystem::perms::owner_exec, std::filesystem::perm_options::add);
+    RunningViewer viewer = start_raster({"view", kTeapot, "--port", "0"}, dir / "err.txt", lone.string());
+    EXPECT_EQ(viewer.process->wait(seconds(20)), 2);
+    EXPECT_EQ(viewer.first_line, "");
+    EXPECT_NE(viewer.log().find("raster view: error: cannot run the viewer program " + (dir / "raster-view").string()),
+              std::string::npos)
+        << viewer.log();
 }
 
 class ViewerHttp : public ::testing::Test {

@@ -44,9 +44,11 @@ struct RunningViewer {
     }
 };
 
-// Starts `raster ARGS` (RASTER_BINARY) and reads its first stdout line; the port is that line's URL's, if any.
-inline RunningViewer start_raster(const std::vector<std::string>& args, const std::filesystem::path& stderr_file) {
-    std::vector<std::string> argv = {RASTER_BINARY};
+// Starts `raster ARGS` (RASTER_BINARY, or `program`) and reads its first stdout line; the port is that line's
+// URL's, if any.
+inline RunningViewer start_raster(const std::vector<std::string>& args, const std::filesystem::path& stderr_file,
+                                  const std::string& program = RASTER_BINARY) {
+    std::vector<std::string> argv = {program};
     argv.insert(argv.end(), args.begin(), args.end());
     RunningViewer viewer;
     viewer.stderr_file = stderr_file;
