@@ -15,6 +15,7 @@
 #include "raster/pipeline/resolve.h"
 #include "raster/formats/scene_format_seed000.h"
 #include "raster/core/parallel.h"
+#include "raster/core/stopwatch.h"
 #include "raster/formats/scene_loader.h"
 
 namespace raster::cli {
@@ -82,6 +83,7 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
 int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     Scene scene;
     std::optional<Seed000Config> seed000;  // a seed 000 config's task decides what is written
+    const auto load_start = Clock::now();
     try {
         SceneFormat format = SceneFormat::raster;
         start_threads(flags.settings.threads);  // the workers start while the scene loads
@@ -92,6 +94,7 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitBadInput;
     }
+    const double ms_load = milliseconds_since(load_start);
     if (seed000 && seed000->task == Seed000Task::transform_test) {
         const Seed000TestResult test = run_seed000_transform_test(*seed000);
         out << format_seed000_test_result(test);
@@ -111,6 +114,7 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
         render_into(scene, options, result);
         frame_ms.push_back(result.stats.ms_total);
     }
+    const auto write_start = Clock::now();
     try {
         write_image(output, depth_task ? depth_image(result.visibility) : result.image, options.threads);
         if (!flags.depth_out.empty()) write_image(flags.depth_out, depth_image(result.visibility), options.threads);
@@ -118,8 +122,11 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitIoError;
     }
+    const double ms_write = milliseconds_since(write_start);
     if (flags.stats) {
         nlohmann::json stats = stats_json(scene, result.stats);
+        stats["ms_load"] = ms_load;    // reading and checking the scene and its files
+        stats["ms_write"] = ms_write;  // encoding and writing the image(s)
         if (flags.repeat > 1) {
             stats["frames"] = flags.repeat;
             stats["ms_first"] = frame_ms.front();
