@@ -10,6 +10,7 @@
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
 #include "raster/pipeline/coverage_kernels.h"
+#include "raster/pipeline/depth_kernels.h"
 #include "raster/pipeline/front_end.h"
 #include "raster/pipeline/per_sample.h"
 #include "raster/pipeline/resolve.h"
@@ -155,16 +156,13 @@ void rasterize_in_tile(const TileJob& job, uint32_t index, int tile_x, int tile_
                     coverage_bits(base, scratch.row_offset[0].data(), scratch.row_offset[1].data(),
                                   scratch.row_offset[2].data(), n, covered, allow_simd);
                 const size_t row_start = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(bx - tile_x)) * S;
-                for (size_t word = 0; word < words; ++word)
-                for (uint64_t bits = covered[word]; bits; bits &= bits - 1) {
-                    const size_t j = word * 64 + static_cast<size_t>(__builtin_ctzll(bits));
-                    const int64_t e1 = base[1] + scratch.row_offset[1][j] - t.bias[1];
-                    const int64_t e2 = base[2] + scratch.row_offset[2][j] - t.bias[2];
-                    const DepthTestResult test =
-                        depth_test(scratch.winner.data(), scratch.depth.data(), row_start + j, depth.at(e1, e2), index);
-                    wrote = wrote || test.written;
-                    newly_filled += test.was_empty;
-                }
+                const DepthRow row{depth.d0, depth.d10_over_area, depth.d20_over_area, depth.fixed24,
+                                   base[1] - t.bias[1], base[2] - t.bias[2], scratch.row_offset[1].data(),
+                                   scratch.row_offset[2].data(), index};
+                const DepthRowResult tested = depth_test_row(row, covered, n, scratch.winner.data() + row_start,
+                                                             scratch.depth.data() + row_start, allow_simd);
+                wrote = wrote || tested.wrote;
+                newly_filled += tested.newly_filled;
             }
             if (block_far && wrote) {
                 // While any sample of the block is empty the bound stays -inf; once all are covered it is their minimum.
@@ -254,7 +252,8 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
     parallel_for(bins.setups.size(), threads, [&](size_t tile) {
         const auto tile_start = Clock::now();
         thread_local TileScratch scratch;
-        const size_t plane = static_cast<size_t>(kTileSize) * kTileSize * samples;
+        // The planes, with room for the depth kernel's whole vectors past the last sample.
+        const size_t plane = static_cast<size_t>(kTileSize) * kTileSize * samples + kDepthPadding;
         scratch.depth.resize(plane);
         // An empty tile needs its planes cleared only once per thread; a tile that had triangles clears them
         // (or, when it threw before it could, the next tile on the thread does).

@@ -1,0 +1,69 @@
+// Depth-test kernels over Highway: compiled once per SIMD target (foreach_target), dispatched at run time; the
+// scalar fallback is called directly when SIMD is not allowed. Built with -ffp-contract=off (CMakeLists.txt).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "raster/pipeline/depth_kernels.cpp"
+#include <hwy/foreach_target.h>  // re-includes this file once per target
+
+#include <hwy/highway.h>
+
+#include "raster/core/conventions.h"
+#include "raster/pipeline/depth_kernels.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace raster {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+DepthRowResult DepthTestRow(const DepthRow& row, const uint64_t* covered, size_t n, uint32_t* winner, float* depth) {
+    const hn::ScalableTag<double> dd;
+    const hn::Rebind<int64_t, decltype(dd)> di;
+    const hn::Rebind<float, decltype(dd)> df;
+    const hn::Rebind<uint32_t, decltype(dd)> du;
+    const size_t lanes = hn::Lanes(dd);  // 1 to 8: divides 64, so a vector's bits never straddle two words
+    static constexpr uint32_t kLaneBit[8] = {1, 2, 4, 8, 16, 32, 64, 128};
+    const auto lane_bit = hn::LoadU(du, kLaneBit);
+    const auto base1 = hn::Set(di, row.base1), base2 = hn::Set(di, row.base2);
+    const auto d0 = hn::Set(dd, row.d0), k1 = hn::Set(dd, row.d10_over_area), k2 = hn::Set(dd, row.d20_over_area);
+    const auto half = hn::Set(dd, 0.5);
+    const auto empty_winner = hn::Set(du, kNoTriangle), triangle = hn::Set(du, row.triangle);
+    const uint32_t lane_mask = static_cast<uint32_t>((uint64_t{1} << lanes) - 1);
+    DepthRowResult result;
+    for (size_t j = 0; j < n; j += lanes) {
+        const uint32_t bits = static_cast<uint32_t>(covered[j / 64] >> (j % 64)) & lane_mask;
+        if (bits == 0) continue;
+        const auto e1 = hn::ConvertTo(dd, hn::Add(base1, hn::LoadU(di, row.offset1 + j)));
+        const auto e2 = hn::ConvertTo(dd, hn::Add(base2, hn::LoadU(di, row.offset2 + j)));
+        auto plane = hn::Add(hn::Add(d0, hn::Mul(e1, k1)), hn::Mul(e2, k2));
+        if (row.fixed24) plane = hn::Floor(hn::Add(plane, half));
+        const auto key = hn::DemoteTo(df, plane);
+        const auto stored_winner = hn::LoadU(du, winner + j);
+        const auto stored_key = hn::LoadU(df, depth + j);
+        const auto empty = hn::Eq(stored_winner, empty_winner);
+        const auto take = hn::And(hn::TestBit(hn::Set(du, bits), lane_bit),
+                                  hn::Or(empty, hn::RebindMask(du, hn::Gt(key, stored_key))));
+        if (hn::AllFalse(du, take)) continue;
+        hn::StoreU(hn::IfThenElse(hn::RebindMask(df, take), key, stored_key), df, depth + j);
+        hn::StoreU(hn::IfThenElse(take, triangle, stored_winner), du, winner + j);
+        result.wrote = true;
+        result.newly_filled += static_cast<uint32_t>(hn::CountTrue(du, hn::And(take, empty)));
+    }
+    return result;
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace raster
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace raster {
+
+HWY_EXPORT(DepthTestRow);
+
+DepthRowResult depth_test_row(const DepthRow& row, const uint64_t* covered, size_t n, uint32_t* winner, float* depth,
+                              bool allow_simd) {
+    if (!allow_simd) return HWY_STATIC_DISPATCH(DepthTestRow)(row, covered, n, winner, depth);
+    return HWY_DYNAMIC_DISPATCH(DepthTestRow)(row, covered, n, winner, depth);
+}
+
+}  // namespace raster
+#endif  // HWY_ONCE
