@@ -2,6 +2,7 @@
 #include "raster/pipeline/resolve.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -19,6 +20,17 @@ PixelResolver::PixelResolver(const Shader& shader, const ResolveParams& params, 
 void PixelResolver::write_covered(const glm::vec3& color, uint8_t* out) const {
     for (int c = 0; c < 3; ++c) out[c] = to_byte(color[c]);
     if (params_.alpha) out[3] = 255;
+}
+
+void PixelResolver::background_row(uint8_t* out, int count) const {
+    if (count <= 0) return;
+    background(out);
+    const size_t total = static_cast<size_t>(count) * static_cast<size_t>(channels());
+    for (size_t filled = static_cast<size_t>(channels()); filled < total;) {
+        const size_t copied = std::min(filled, total - filled);
+        std::memcpy(out + filled, out, copied);
+        filled += copied;
+    }
 }
 
 void PixelResolver::one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const {

@@ -33,6 +33,9 @@ public:
         for (int c = 0; c < 3; ++c) out[c] = background_[c];  // fixed counts: no library call per pixel
         if (params_.alpha) out[3] = 0;
     }
+    // background() for `count` pixels side by side (a row of a tile nothing was drawn in): the same bytes, copied
+    // in doubling blocks instead of written a channel at a time.
+    void background_row(uint8_t* out, int count) const;
     bool shades_uniform_pixels_once() const { return params_.msaa || samples_ == 1; }
     void one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const;
     // one_triangle for `count` pixels at once (their shading batched): the same bytes.

@@ -190,8 +190,15 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
             if (resolver && !visibility) {  // the common pixels, answered without per-sample bookkeeping
                 const uint32_t winner = scratch.winner[first];
                 const bool uniform = is_uniform(&scratch.winner[first], S);
-                if (uniform && winner == kNoTriangle) {
-                    resolver->background(image->at(px, py));
+                if (uniform && winner == kNoTriangle) {  // and the empty pixels after it, written as one row
+                    int run_end = px + 1;
+                    auto empty_at = [&](int x) {
+                        const uint32_t* w = &scratch.winner[first + static_cast<size_t>(x - px) * S];
+                        return w[0] == kNoTriangle && is_uniform(w, S);
+                    };
+                    while (run_end < x1 && empty_at(run_end)) ++run_end;
+                    resolver->background_row(image->at(px, py), run_end - px);
+                    px = run_end - 1;
                     continue;
                 }
                 if (uniform && resolver->shades_uniform_pixels_once()) {
@@ -328,8 +335,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
         },
         [&](int tile_x, int tile_y) {  // nothing drawn here: background only
             const int x1 = std::min(settings.width, tile_x + kTileSize), y1 = std::min(settings.height, tile_y + kTileSize);
-            for (int py = tile_y; py < y1; ++py)
-                for (int px = tile_x; px < x1; ++px) resolver.background(image.at(px, py));
+            for (int py = tile_y; py < y1; ++py) resolver.background_row(image.at(tile_x, py), x1 - tile_x);
         });
     stats.samples = static_cast<size_t>(settings.width) * settings.height * samples;
     stats.covered_samples = covered;
