@@ -76,7 +76,7 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
     try {
         if (!flags.json_out.empty())
             write_file_atomically(flags.json_out, harness::comparison_json(*comparison).dump(2) + "\n");
-        if (!flags.diff_out.empty()) write_image(flags.diff_out, harness::diff_map(*comparison));
+        if (!flags.diff_out.empty()) write_image(flags.diff_out, harness::diff_map(*comparison), options.threads);
     } catch (const std::exception& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;

@@ -172,9 +172,9 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
             row.raster_image = stem + ".raster.png";
             row.oracle_image = stem + ".oracle.png";
             row.diff_image = stem + ".diff.png";
-            write_image(dir / row.raster_image, comparison->raster.image);
-            write_image(dir / row.oracle_image, comparison->oracle_image);
-            write_image(dir / row.diff_image, harness::diff_map(*comparison));
+            write_image(dir / row.raster_image, comparison->raster.image, flags.threads);
+            write_image(dir / row.oracle_image, comparison->oracle_image, flags.threads);
+            write_image(dir / row.diff_image, harness::diff_map(*comparison), flags.threads);
             row.comparison = harness::comparison_json(*comparison);
             char line[256];
             std::snprintf(line, sizeof line,

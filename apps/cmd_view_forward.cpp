@@ -43,9 +43,11 @@ int run_viewer_program(std::ostream& out, std::ostream& err) {
         argv.push_back(nullptr);
         execv(viewer.c_str(), argv.data());  // returns only on failure
     }
-    err << "raster view: error: cannot run the viewer program " << viewer.string() << ": "
-        << (error ? error.message() : std::strerror(errno)) << " (it is built beside raster unless "
-        << "RASTER_BUILD_VIEWER is OFF)\n";
+    const std::string why = error                ? "cannot find this program's folder: " + error.message()
+                            : arguments.empty() ? std::string("cannot read /proc/self/cmdline")
+                                                : std::string(std::strerror(errno));
+    err << "raster view: error: cannot run the viewer program " << viewer.string() << ": " << why
+        << " (it is built beside raster unless RASTER_BUILD_VIEWER is OFF)\n";
     return kExitBadInput;
 }
 

@@ -87,7 +87,7 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
 
     render_into(frame, options_, buffers_);
     const Clock::time_point encode_start = Clock::now();
-    const std::vector<uint8_t> png = encode_image(buffers_.image, ImageFormat::png);
+    const std::vector<uint8_t> png = encode_image(buffers_.image, ImageFormat::png, options_.threads);
     ViewerFrame result{std::string(png.begin(), png.end()), {}};
 
     ViewerFrameRecord& record = result.record;

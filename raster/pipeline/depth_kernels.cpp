@@ -6,6 +6,8 @@
 
 #include <hwy/highway.h>
 
+#include <limits>
+
 #include "raster/core/conventions.h"
 #include "raster/pipeline/depth_kernels.h"
 
@@ -15,7 +17,7 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 DepthRowResult DepthTestRow(const DepthRow& row, const uint64_t* covered, size_t n, uint32_t* winner, float* depth) {
-    const hn::ScalableTag<double> dd;
+    const hn::CappedTag<double, 8> dd;  // at most 8 lanes: kLaneBit, the padding
     const hn::Rebind<int64_t, decltype(dd)> di;
     const hn::Rebind<float, decltype(dd)> df;
     const hn::Rebind<uint32_t, decltype(dd)> du;
@@ -25,6 +27,9 @@ DepthRowResult DepthTestRow(const DepthRow& row, const uint64_t* covered, size_t
     const auto base1 = hn::Set(di, row.base1), base2 = hn::Set(di, row.base2);
     const auto d0 = hn::Set(dd, row.d0), k1 = hn::Set(dd, row.d10_over_area), k2 = hn::Set(dd, row.d20_over_area);
     const auto half = hn::Set(dd, 0.5);
+    const auto float_overflow = hn::Set(dd, 0x1.ffffffp+127);  // FLT_MAX + 2^103: rounds (to even) to inf
+    const auto infinity = hn::Set(df, std::numeric_limits<float>::infinity());
+    const auto one = hn::Set(dd, 1.0);
     const auto empty_winner = hn::Set(du, kNoTriangle), triangle = hn::Set(du, row.triangle);
     const uint32_t lane_mask = static_cast<uint32_t>((uint64_t{1} << lanes) - 1);
     DepthRowResult result;
@@ -35,7 +40,11 @@ DepthRowResult DepthTestRow(const DepthRow& row, const uint64_t* covered, size_t
         const auto e2 = hn::ConvertTo(dd, hn::Add(base2, hn::LoadU(di, row.offset2 + j)));
         auto plane = hn::Add(hn::Add(d0, hn::Mul(e1, k1)), hn::Mul(e2, k2));
         if (row.fixed24) plane = hn::Floor(hn::Add(plane, half));
-        const auto key = hn::DemoteTo(df, plane);
+        // static_cast<float>'s rounding: a double at or beyond FLT_MAX + half its ulp becomes +-inf, where
+        // Highway's emulated targets (EMU128, SCALAR) clamp to +-FLT_MAX.
+        const auto demoted = hn::DemoteTo(df, plane);
+        const auto overflow = hn::DemoteTo(df, hn::IfThenElseZero(hn::Ge(hn::Abs(plane), float_overflow), one));
+        const auto key = hn::IfThenElse(hn::Gt(overflow, hn::Zero(df)), hn::CopySign(infinity, demoted), demoted);
         const auto stored_winner = hn::LoadU(du, winner + j);
         const auto stored_key = hn::LoadU(df, depth + j);
         const auto empty = hn::Eq(stored_winner, empty_winner);
@@ -55,7 +64,12 @@ DepthRowResult DepthTestRow(const DepthRow& row, const uint64_t* covered, size_t
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
+#include "raster/pipeline/coverage_kernels.h"
+
 namespace raster {
+
+// A vector of up to 8 lanes starting at the row's last sample reads 7 entries past it.
+static_assert(kDepthPadding >= 7 && kCoveragePadding >= 7, "the kernels read whole vectors of up to 8 lanes");
 
 HWY_EXPORT(DepthTestRow);
 

@@ -1,11 +1,13 @@
 // The depth kernel: a block row's depth test, the same on every Highway target the CPU runs and on the scalar
 // fallback, and equal to per_sample.h's DepthPlane and depth_test (the reference rasterizer's) applied one covered
-// sample at a time: keys, winners, ties, empty samples, NaN stored keys, fixed24 levels, the padding untouched.
+// sample at a time: keys, winners, ties, empty samples, NaN stored keys, fixed24 levels, keys beyond float's range,
+// the padding untouched.
 #include "raster/pipeline/depth_kernels.h"
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <random>
 #include <vector>
@@ -39,6 +41,13 @@ Case random_case(std::mt19937_64& rng, size_t n, bool fixed24) {
     c.setup.area2 = int64_t{1} + static_cast<int64_t>(unit(rng) * 1e12);
     c.setup.depth_fixed24 = fixed24;
     for (double& key : c.setup.depth) key = fixed24 ? -unit(rng) * kFixed24Levels : unit(rng);
+    // Sometimes a flat plane beyond float's range (only out-of-range input reaches it): static_cast<float>
+    // rounds from FLT_MAX + 2^103 up to inf, just below it down to FLT_MAX.
+    const double beyond[] = {1e39, -1e39, 0x1.ffffffp+127, -0x1.ffffffp+127, 0x1.fffffefffffffp+127, 3.4028234e38};
+    if (pick(rng) == 0) {
+        const double flat = beyond[std::uniform_int_distribution<size_t>(0, std::size(beyond) - 1)(rng)];
+        for (double& key : c.setup.depth) key = flat;
+    }
     c.base1 = pick(rng) == 0 ? large(rng) * 16 : small(rng);
     c.base2 = pick(rng) == 0 ? large(rng) * 16 : small(rng);
     for (auto* offset : {&c.offset1, &c.offset2}) {
