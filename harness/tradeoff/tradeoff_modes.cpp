@@ -22,11 +22,26 @@ TradeoffMode standard_samples(int samples) {
         }};
 }
 
+// Phong and Blinn-Phong light every sample; the lighting axis trades that for Blinn-Phong once per vertex
+// (Gouraud) or once per triangle (flat). Other shading modes are left as they are: unlit has no lighting to move,
+// and cel and Gooch are looks of their own, not approximations of a per-sample model.
+bool lit_per_sample(ShadingMode mode) { return mode == ShadingMode::phong || mode == ShadingMode::blinn_phong; }
+
+TradeoffMode lighting_rate(ShadingMode cheaper, std::string name, std::string description) {
+    return {std::move(name), std::move(description),
+            [cheaper](RenderSettings& s) {
+                if (lit_per_sample(s.shading)) s.shading = cheaper;
+            },
+            ModeNeeds::per_sample_lighting};
+}
+
 // A preset: every axis set at once, whatever the scene asked for (shadow maps: resolution and filter; the bias is
 // the scene's; transparency: the mode).
 TradeoffMode preset(std::string name, std::string description, int snap_bits, int samples, SamplePattern pattern,
-                    bool msaa, PrecisionModes precision, int shadow_resolution, int pcf, TransparencyMode transparency) {
+                    bool msaa, PrecisionModes precision, int shadow_resolution, int pcf, TransparencyMode transparency,
+                    bool lit_per_vertex = false) {
     return {std::move(name), std::move(description), [=](RenderSettings& s) {
+                if (lit_per_vertex && lit_per_sample(s.shading)) s.shading = ShadingMode::gouraud;
                 s.snap_bits = snap_bits;
                 s.samples = samples;
                 s.pattern = pattern;
@@ -85,31 +100,25 @@ TradeoffMode msaa(int samples) {
 std::vector<TradeoffMode> make_catalogue() {
     std::vector<TradeoffMode> modes;
     modes.push_back({"baseline", "the scene's own settings", [](RenderSettings&) {}});
-    for (int bits : {4, 8, 12, 16}) modes.push_back(snap(bits));
+    for (int bits : {8, 12, 16}) modes.push_back(snap(bits));
     modes.push_back({"edges-fixed", "exact 64-bit fixed-point edge functions (watertight)",
                      [](RenderSettings& s) { s.modes.edges = EdgeArithmetic::fixed; }});
-    modes.push_back({"edges-float", "32-bit float edge functions",
-                     [](RenderSettings& s) { s.modes.edges = EdgeArithmetic::float32; }});
     for (int samples : {1, 4, 8, 16}) modes.push_back(standard_samples(samples));
     for (int side : {4, 8}) modes.push_back(grid(side));
     for (int samples : {4, 16}) modes.push_back(msaa(samples));
     modes.push_back({"perspective", "perspective-correct interpolation",
                      [](RenderSettings& s) { s.modes.interpolation = Interpolation::perspective; }});
-    modes.push_back({"affine", "affine (screen-space) interpolation",
-                     [](RenderSettings& s) { s.modes.interpolation = Interpolation::affine; }});
     modes.push_back({"depth-reversed-z", "reversed-Z float depth",
                      [](RenderSettings& s) { s.modes.depth = DepthFormat::reversed_z; }});
-    modes.push_back({"depth-float", "float z/w depth, near 0 and far 1",
-                     [](RenderSettings& s) { s.modes.depth = DepthFormat::float_z; }});
-    modes.push_back({"depth-fixed24", "24-bit fixed-point z/w depth",
-                     [](RenderSettings& s) { s.modes.depth = DepthFormat::fixed24; }});
     modes.push_back(
         {"clip-full", "clipping against every plane", [](RenderSettings& s) { s.modes.clipping = Clipping::full; }});
-    modes.push_back({"guard-band", "near/far clipping only, a guard band instead of the side planes",
-                     [](RenderSettings& s) { s.modes.clipping = Clipping::guard_band; }});
     modes.push_back({"hiz-on", "hierarchical-Z culling on", [](RenderSettings& s) { s.modes.hierarchical_z = true; }});
     modes.push_back(
         {"hiz-off", "hierarchical-Z culling off", [](RenderSettings& s) { s.modes.hierarchical_z = false; }});
+    modes.push_back(lighting_rate(ShadingMode::gouraud, "shading-gouraud",
+                                  "Phong and Blinn-Phong lit once per vertex, the colours interpolated (Gouraud)"));
+    modes.push_back(lighting_rate(ShadingMode::flat, "shading-flat",
+                                  "Phong and Blinn-Phong lit once per triangle, at its centroid (flat)"));
     modes.push_back(filter(TextureFilter::nearest, "every texture nearest-sampled at level 0 (no mipmaps)"));
     modes.push_back(filter(TextureFilter::bilinear, "every texture bilinear at level 0 (no mipmaps)"));
     modes.push_back(filter(TextureFilter::trilinear, "every texture trilinear: bilinear in two mip levels, blended"));
@@ -123,19 +132,21 @@ std::vector<TradeoffMode> make_catalogue() {
     modes.push_back({"transparency-weighted", "transparent fragments averaged by opacity, in any order (no sort)",
                      [](RenderSettings& s) { s.transparency.mode = TransparencyMode::weighted; },
                      ModeNeeds::transparency});
+    // Only choices that buy time: the precision axes a cheap setting of which is no faster here (4 sub-pixel bits,
+    // float edges, affine interpolation, fixed24 or float depth, the guard band) stay at their accurate values.
     modes.push_back(preset("fastest",
-                           "4 bits, float edges, 1 sample, affine, fixed24 depth, guard band, 512 shadow texels, no PCF, "
-                           "weighted transparency",
-                           4, 1, SamplePattern::standard, false,
-                           {EdgeArithmetic::float32, Interpolation::affine, DepthFormat::fixed24,
-                            Clipping::guard_band, true},
-                           512, 1, TransparencyMode::weighted));
+                           "1 sample, Gouraud lighting, 512 shadow texels, no PCF, weighted transparency; 8 bits, "
+                           "fixed edges, perspective, reversed-Z, full clipping",
+                           8, 1, SamplePattern::standard, false,
+                           {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
+                            Clipping::full, true},
+                           512, 1, TransparencyMode::weighted, /*lit_per_vertex=*/true));
     modes.push_back(preset("balanced",
-                           "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, guard band, 1024 shadow "
-                           "texels, 3x3 PCF",
+                           "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, full clipping, 1024 "
+                           "shadow texels, 3x3 PCF",
                            8, 4, SamplePattern::standard, true,
                            {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
-                            Clipping::guard_band, true},
+                            Clipping::full, true},
                            1024, 3, TransparencyMode::sorted));
     modes.push_back(preset("exact",
                            "16 bits, fixed edges, 8x8 grid SSAA, perspective, reversed-Z, full clipping, 4096 shadow "
@@ -178,12 +189,12 @@ bool same_mode_settings(const RenderSettings& a, const RenderSettings& b) {
            a.shadows.pcf == b.shadows.pcf && a.transparency.mode == b.transparency.mode &&
            a.modes.edges == b.modes.edges && a.modes.interpolation == b.modes.interpolation &&
            a.modes.depth == b.modes.depth && a.modes.clipping == b.modes.clipping &&
-           a.modes.hierarchical_z == b.modes.hierarchical_z;
+           a.modes.hierarchical_z == b.modes.hierarchical_z && a.shading == b.shading;
 }
 
 SceneFeatures scene_features(const Scene& scene) {
     return {has_textures(scene), has_shadows(scene) && scene.settings.shading != ShadingMode::unlit,
-            has_transparency(scene)};
+            has_transparency(scene), lit_per_sample(scene.settings.shading)};
 }
 
 std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, const SceneFeatures& features) {
@@ -193,6 +204,7 @@ std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, c
         if (mode.needs == ModeNeeds::textures && !features.textures) continue;
         if (mode.needs == ModeNeeds::shadows && !features.shadows) continue;
         if (mode.needs == ModeNeeds::transparency && !features.transparency) continue;
+        if (mode.needs == ModeNeeds::per_sample_lighting && !features.per_sample_lighting) continue;
         const RenderSettings settings = apply_mode(mode, baseline);
         bool duplicate = false;
         for (const RenderSettings& other : seen) duplicate = duplicate || same_mode_settings(settings, other);
@@ -204,7 +216,8 @@ std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, c
 }
 
 nlohmann::json mode_settings_json(const RenderSettings& s) {
-    return {{"snap_bits", s.snap_bits},
+    return {{"shading", to_string(s.shading)},
+            {"snap_bits", s.snap_bits},
             {"edges", to_string(s.modes.edges)},
             {"samples", s.samples},
             {"pattern", to_string(s.pattern)},

@@ -1,7 +1,9 @@
 // The speed/accuracy modes `raster tradeoff` sweeps: each a stable short name for one change to a scene's render
 // settings (sub-pixel bits, edge arithmetic, samples and pattern, MSAA, interpolation, depth format, clipping,
-// hierarchical Z, texture filter, shadow map resolution, bias and filter, transparency), or a named preset that
-// sets all of them.
+// hierarchical Z, lighting rate, texture filter, shadow map resolution, bias and filter, transparency), or a named
+// preset that sets all of them. A cheap setting is a mode only when it is faster: 4 sub-pixel bits, float edges,
+// affine interpolation, float or fixed24 depth and the guard band measure no faster than their accurate values, so
+// they remain render settings (for the accuracy they lose) but not trade-off modes.
 #pragma once
 
 #include <functional>
@@ -15,11 +17,12 @@
 namespace raster::harness {
 
 // What a scene must have for a mode to change anything: a texture filter needs textures, a shadow map setting a
-// light that casts shadows, a transparency mode a material with opacity below 1.
-enum class ModeNeeds { nothing, textures, shadows, transparency };
+// light that casts shadows, a transparency mode a material with opacity below 1, a lighting rate Phong or
+// Blinn-Phong shading.
+enum class ModeNeeds { nothing, textures, shadows, transparency, per_sample_lighting };
 
 struct TradeoffMode {
-    std::string name;         // e.g. "baseline", "snap4", "edges-float", "grid8x8", "affine", "fastest"
+    std::string name;         // e.g. "baseline", "snap12", "grid8x8", "shading-gouraud", "fastest"
     std::string description;  // one line, for --list-modes and the JSON
     std::function<void(RenderSettings&)> apply;  // the change, made to the scene's own settings
     ModeNeeds needs = ModeNeeds::nothing;        // only swept on scenes that have it
@@ -30,6 +33,7 @@ struct SceneFeatures {
     bool textures = false;
     bool shadows = false;
     bool transparency = false;
+    bool per_sample_lighting = false;  // Phong or Blinn-Phong
 };
 SceneFeatures scene_features(const Scene& scene);
 
@@ -46,8 +50,8 @@ std::string tradeoff_mode_names();
 // `baseline` with the mode applied.
 RenderSettings apply_mode(const TradeoffMode& mode, RenderSettings baseline);
 
-// True when a and b agree on every field a mode can change (snap bits, samples, pattern, MSAA, PrecisionModes,
-// texture filter, shadow settings).
+// True when a and b agree on every field a mode can change (shading, snap bits, samples, pattern, MSAA,
+// PrecisionModes, texture filter, shadow settings).
 bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
 
 // The default sweep for a scene: every mode in catalogue order, leaving out each whose settings equal those of a
@@ -55,7 +59,7 @@ bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
 // every point of the plot is a distinct configuration.
 std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, const SceneFeatures& features = {});
 
-// {snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z, texture_filter,
+// {shading, snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z, texture_filter,
 //  shadows: {resolution, bias, slope_bias, pcf}, transparency}
 nlohmann::json mode_settings_json(const RenderSettings& settings);
 

@@ -77,6 +77,18 @@ Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFun
                     light_vertex(static_cast<uint32_t>(i), scene.meshes[mesh].material, &vertex_terms_[i * stride]);
             }
         }
+        if (!textured && !shadows_) {
+            // Nothing varies per sample but the weights: each corner's final colour once per frame, as shade_point
+            // forms it, so a sample is three products and two sums.
+            corner_color_.resize(3 * geometry.triangles.size());
+            for (uint32_t tri = 0; tri < geometry.triangles.size(); ++tri)
+                for (int k = 0; k < 3; ++k) {
+                    glm::vec3 corner_bary(0.0f);
+                    corner_bary[k] = 1.0f;
+                    const LightingTerms& terms = *corner_terms(tri, k);
+                    corner_color_[3 * tri + k] = base_color(tri, corner_bary) * terms.diffuse + terms.specular;
+                }
+        }
     } else if (mode_ == ShadingMode::flat) {
         const glm::vec3 centroid_bary(1.0f / 3.0f);
         const bool per_face_terms = textured || shadows_;
@@ -230,6 +242,18 @@ void Shader::light_batch(const uint32_t* triangle, const glm::vec3* bary, size_t
 }
 
 void Shader::shade_many(const uint32_t* triangle, const glm::vec3* bary, size_t count, glm::vec3* out) const {
+    if (!corner_color_.empty()) {  // Gouraud: shade_point's sum over the corners, in its order
+        for (size_t j = 0; j < count; ++j) {
+            const glm::vec3* corner = &corner_color_[3 * static_cast<size_t>(triangle[j])];
+            const glm::vec3& b = bary[j];
+            out[j] = glm::vec3(0.0f) + b[0] * corner[0] + b[1] * corner[1] + b[2] * corner[2];
+        }
+        return;
+    }
+    if (!face_color_.empty()) {  // flat: one colour per triangle
+        for (size_t j = 0; j < count; ++j) out[j] = face_color_[triangle[j]];
+        return;
+    }
     if (!lights_in_batches_) {
         for (size_t j = 0; j < count; ++j) out[j] = shade_point(triangle[j], bary[j]);
         return;
@@ -268,8 +292,7 @@ glm::vec3 Shader::shade_point(uint32_t triangle, const glm::vec3& bary) const {
     switch (mode_) {
         case ShadingMode::unlit:
             return textured ? base_color(triangle, bary) * texel : base_color(triangle, bary);
-        case ShadingMode::flat: {
-            if (face_terms_.empty()) return face_color_[triangle];
+        case ShadingMode::flat: {  // textured or shadowed: shade_many answers the rest from face_color_
             const LightingTerms terms = combined(&face_terms_[triangle * static_cast<size_t>(terms_stride_)], visibility);
             return (textured ? texel * terms.diffuse : terms.diffuse) + terms.specular;
         }

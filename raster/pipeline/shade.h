@@ -80,6 +80,8 @@ private:
     int terms_stride_ = 1;                     // flat and Gouraud: 1 + shadowed lights with shadows, else 1
     std::vector<LightingTerms> vertex_terms_;  // gouraud only: per global vertex, or per triangle corner (3 t + k)
                                                // when a mesh has several materials; terms_stride_ entries each
+    std::vector<glm::vec3> corner_color_;      // gouraud without textures or shadows: per triangle corner (3 t + k),
+                                               // the final colour base * diffuse + specular; shade_many interpolates
     std::vector<glm::vec3> face_color_;        // flat only: per triangle, final colour without texture or shadows
     std::vector<LightingTerms> face_terms_;    // flat with textures or shadows: per triangle, terms_stride_ entries
                                                // of base * diffuse and specular

@@ -94,7 +94,8 @@ TEST(TradeoffCli, writesParsableCsvJsonAndSvgWholeAndOnlyThose) {
         on_front += m["on_front"].get<bool>();
     }
     EXPECT_EQ(s["modes"][1]["settings"]["samples"], 4);
-    EXPECT_EQ(s["modes"][2]["settings"]["edges"], "float");
+    EXPECT_EQ(s["modes"][2]["settings"]["samples"], 1);
+    EXPECT_EQ(s["modes"][2]["settings"]["shading"], "unlit");  // fastest moves only per-sample lighting
     EXPECT_EQ(s["front"].size(), on_front);
     EXPECT_GE(on_front, 1u);
 
