@@ -36,9 +36,18 @@ bool known_statement(std::string_view keyword) {
     return std::find(std::begin(kKnown), std::end(kKnown), keyword) != std::end(kKnown);
 }
 
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
 // An index as the checks read it: strtol over the whole part, which ends early at a NUL byte as a C string does.
+// The usual part, a sign and at most 18 digits, is read here to the same value without copying it for strtol.
 std::optional<long> index_in(std::string_view part) {
     if (part.empty()) return std::nullopt;
+    const size_t sign = part[0] == '-' || part[0] == '+' ? 1 : 0;
+    if (part.size() > sign && part.size() - sign <= 18 && std::all_of(part.begin() + sign, part.end(), is_digit)) {
+        long value = 0;
+        for (size_t k = sign; k < part.size(); ++k) value = value * 10 + (part[k] - '0');
+        return part[0] == '-' ? -value : value;
+    }
     const std::string text(part);
     char* end = nullptr;
     errno = 0;
@@ -171,13 +180,25 @@ private:
         }
     }
 
-    double checked_coordinate(std::string_view word) const {
+    // A plain decimal, [+-]digits[.digits] or [+-].digits with at most 30 digits before the point: strtod reads it
+    // whole, finite and within float's range, so checked_coordinate need not run strtod on it.
+    static bool plain_decimal(std::string_view word) {
+        size_t at = !word.empty() && (word[0] == '+' || word[0] == '-') ? 1 : 0;
+        size_t whole = 0, fraction = 0;
+        for (; at < word.size() && is_digit(word[at]); ++at) ++whole;
+        if (at < word.size() && word[at] == '.')
+            for (++at; at < word.size() && is_digit(word[at]); ++at) ++fraction;
+        return at == word.size() && whole + fraction > 0 && whole <= 30;
+    }
+
+    // Refuses a word strtod does not read whole, or reads as a value beyond float's range.
+    void checked_coordinate(std::string_view word) const {
+        if (plain_decimal(word)) return;
         const std::string text(word);
         char* end = nullptr;
         const double value = std::strtod(text.c_str(), &end);
         if (end != text.c_str() + text.size()) fail("'" + text + "' is not a number");
         if (!std::isfinite(value) || std::fabs(value) > 3.0e38) fail("'" + text + "' is not a finite number");
-        return value;
     }
 
     // The coordinates of a `v` or `vn`: every word after the keyword must be a number by strtod (at least 3 of

@@ -177,6 +177,11 @@ glm::vec3 Shader::base_color(uint32_t triangle, const glm::vec3& bary) const {
     return material(triangle).color;
 }
 
+bool Shader::base_varies(uint32_t triangle) const {
+    const MeshData& mesh = scene_.meshes[geometry_.triangle_mesh[triangle]].data;
+    return mesh.face_colors.empty() && !mesh.colors.empty();
+}
+
 bool Shader::texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3& factor) const {
     if (textures_.empty()) return false;
     const Material& m = material(triangle);
@@ -187,19 +192,28 @@ bool Shader::texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3&
     return true;
 }
 
-void Shader::surface_at(uint32_t triangle, const glm::vec3& bary, glm::vec3& position, glm::vec3& normal) const {
+Shader::SurfaceCorners Shader::surface_corners(uint32_t triangle) const {
     const TriangleIndices& v = geometry_.triangles[triangle];
+    SurfaceCorners corners;
+    for (int i = 0; i < 3; ++i) {
+        corners.position[i] = geometry_.world_position[v.v[i]];
+        corners.normal[i] = geometry_.world_normal[v.v[i]];
+    }
+    return corners;
+}
+
+void Shader::surface_at(const SurfaceCorners& corners, const glm::vec3& bary, glm::vec3& position, glm::vec3& normal) {
     position = glm::vec3(0.0f);
     normal = glm::vec3(0.0f);
     for (int i = 0; i < 3; ++i) {
-        position += bary[i] * geometry_.world_position[v.v[i]];
-        normal += bary[i] * geometry_.world_normal[v.v[i]];
+        position += bary[i] * corners.position[i];
+        normal += bary[i] * corners.normal[i];
     }
 }
 
 LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary, const float* visibility) const {
     glm::vec3 position, normal;
-    surface_at(triangle, bary, position, normal);
+    surface_at(surface_corners(triangle), bary, position, normal);
     const glm::vec3 unit_normal = unit_or_zero(normal), to_eye = unit_or_zero(scene_.camera.eye - position);
     const RenderSettings& settings = scene_.settings;
     switch (mode_) {
@@ -216,12 +230,17 @@ LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary, const f
 }
 
 void Shader::light_batch(const uint32_t* triangle, const glm::vec3* bary, size_t count, LightingBatch& batch) const {
-    for (size_t j = 0; j < count; ++j) {
-        glm::vec3 position, normal;
-        surface_at(triangle[j], bary[j], position, normal);
-        for (int c = 0; c < 3; ++c) {
-            batch.position[c][j] = position[c];
-            batch.normal[c][j] = normal[c];
+    // Each run of points on one triangle reads its corners once.
+    for (size_t j = 0; j < count;) {
+        const uint32_t run_triangle = triangle[j];
+        const SurfaceCorners corners = surface_corners(run_triangle);
+        for (; j < count && triangle[j] == run_triangle; ++j) {
+            glm::vec3 position, normal;
+            surface_at(corners, bary[j], position, normal);
+            for (int c = 0; c < 3; ++c) {
+                batch.position[c][j] = position[c];
+                batch.normal[c][j] = normal[c];
+            }
         }
     }
     orient_points(batch, count, scene_.camera.eye);
@@ -262,13 +281,29 @@ void Shader::shade_many(const uint32_t* triangle, const glm::vec3* bary, size_t 
     for (size_t start = 0; start < count; start += kLightingBatch) {
         const size_t n = std::min(kLightingBatch, count - start);
         light_batch(triangle + start, bary + start, n, batch);
-        for (size_t j = 0; j < n; ++j) {
-            const uint32_t tri = triangle[start + j];
-            const glm::vec3 diffuse(batch.diffuse[0][j], batch.diffuse[1][j], batch.diffuse[2][j]);
-            const glm::vec3 specular(batch.specular[0][j], batch.specular[1][j], batch.specular[2][j]);
-            glm::vec3 texel(1.0f);
-            const bool textured = texture_factor(tri, bary[start + j], texel);
-            out[start + j] = lit_color(tri, bary[start + j], textured ? &texel : nullptr, {diffuse, specular});
+        if (!textures_.empty()) {
+            for (size_t j = 0; j < n; ++j) {
+                const uint32_t tri = triangle[start + j];
+                const glm::vec3 diffuse(batch.diffuse[0][j], batch.diffuse[1][j], batch.diffuse[2][j]);
+                const glm::vec3 specular(batch.specular[0][j], batch.specular[1][j], batch.specular[2][j]);
+                glm::vec3 texel(1.0f);
+                const bool textured = texture_factor(tri, bary[start + j], texel);
+                out[start + j] = lit_color(tri, bary[start + j], textured ? &texel : nullptr, {diffuse, specular});
+            }
+            continue;
+        }
+        // Untextured: lit_color's base * diffuse + specular, the base colour looked up once per run of a triangle
+        // unless its vertices carry colours.
+        for (size_t j = 0; j < n;) {
+            const uint32_t run_triangle = triangle[start + j];
+            const bool per_vertex = base_varies(run_triangle);
+            const glm::vec3 run_base = base_color(run_triangle, glm::vec3(1.0f / 3.0f));
+            for (; j < n && triangle[start + j] == run_triangle; ++j) {
+                const glm::vec3 diffuse(batch.diffuse[0][j], batch.diffuse[1][j], batch.diffuse[2][j]);
+                const glm::vec3 specular(batch.specular[0][j], batch.specular[1][j], batch.specular[2][j]);
+                const glm::vec3 base = per_vertex ? base_color(run_triangle, bary[start + j]) : run_base;
+                out[start + j] = base * diffuse + specular;
+            }
         }
     }
 }

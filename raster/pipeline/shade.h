@@ -39,6 +39,8 @@ public:
 private:
     // The face colour, else the interpolated vertex colour, else the material colour; no texture.
     glm::vec3 base_color(uint32_t triangle, const glm::vec3& bary) const;
+    // Whether base_color varies over the triangle (interpolated vertex colours), else it is one colour.
+    bool base_varies(uint32_t triangle) const;
     // The texture's value at the point when the triangle's material has one (it multiplies the base colour).
     bool texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3& factor) const;
     const Material& material(uint32_t triangle) const;
@@ -47,8 +49,14 @@ private:
     // base * diffuse + specular, the base colour times the texel when there is one (Phong, Blinn-Phong, cel, Gooch).
     glm::vec3 lit_color(uint32_t triangle, const glm::vec3& bary, const glm::vec3* texel,
                         const LightingTerms& terms) const;
+    // A triangle's world positions and normals at its three corners.
+    struct SurfaceCorners {
+        glm::vec3 position[3], normal[3];
+    };
+    SurfaceCorners surface_corners(uint32_t triangle) const;
     // The world position and the interpolated (not yet unit) normal at the point.
-    void surface_at(uint32_t triangle, const glm::vec3& bary, glm::vec3& position, glm::vec3& normal) const;
+    static void surface_at(const SurfaceCorners& corners, const glm::vec3& bary, glm::vec3& position,
+                           glm::vec3& normal);
     LightingTerms light_at(uint32_t triangle, const glm::vec3& bary, const float* visibility) const;
     // Up to kLightingBatch Blinn-Phong or Phong points: interpolated into the batch, oriented, shadow visibility per
     // light, lit run by run of one material; the terms are left in `batch`.
