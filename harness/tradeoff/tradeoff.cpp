@@ -317,14 +317,14 @@ nlohmann::json tradeoff_json(const std::vector<SceneTradeoff>& scenes, const Tra
 
 std::string tradeoff_csv(const std::vector<SceneTradeoff>& scenes) {
     std::string csv =
-        "scene,mode,shading,snap_bits,edges,samples_per_pixel,pattern,msaa,interpolation,depth,clipping,hierarchical_z,"
-        "median_ms,samples,genuine,ambiguous,color_rmse,coverage_error,on_front\n";
+        "scene,mode,shading,snap_bits,edges,samples_per_pixel,pattern,msaa,interpolation,depth,clipping,"
+        "hierarchical_z,median_ms,samples,genuine,ambiguous,color_rmse,coverage_error,on_front\n";
     for (const SceneTradeoff& scene : scenes)
         for (const ModeResult& m : scene.modes) {
             const RenderSettings& s = m.settings;
-            csv += csv_field(scene.name) + "," + csv_field(m.mode) + "," + to_string(s.shading) + "," + std::to_string(s.snap_bits) + "," +
-                   to_string(s.modes.edges) + "," + std::to_string(s.samples) + "," + to_string(s.pattern) + "," +
-                   (s.msaa ? "1" : "0") + "," + to_string(s.modes.interpolation) + "," + to_string(s.modes.depth) +
+            csv += csv_field(scene.name) + "," + csv_field(m.mode) + "," + to_string(s.shading) + "," +
+                   std::to_string(s.snap_bits) + "," + to_string(s.modes.edges) + "," + std::to_string(s.samples) +
+                   "," + to_string(s.pattern) + "," + (s.msaa ? "1" : "0") + "," + to_string(s.modes.interpolation) + "," + to_string(s.modes.depth) +
                    "," + to_string(s.modes.clipping) + "," + (s.modes.hierarchical_z ? "1" : "0") + "," +
                    format("%.3f", m.median_ms) + "," + std::to_string(m.samples) + "," + std::to_string(m.genuine) +
                    "," + std::to_string(m.ambiguous) + "," + format("%.4f", m.color_rmse) + "," +

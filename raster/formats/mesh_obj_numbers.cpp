@@ -10,7 +10,6 @@
 namespace raster::obj {
 namespace {
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
 size_t skip_blanks(std::string_view text, size_t at) {

@@ -7,6 +7,9 @@
 
 namespace raster::obj {
 
+// An ASCII decimal digit, '0' to '9' (std::isdigit without its locale and its int argument).
+inline bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
 // The value of the longest prefix of `word` that is a number, computed digit by digit as tinyobjloader computed it:
 // [sign] (digits [. digits] | . digits) [(e | E) [sign] digits]. nullopt when no prefix is a number (and for an
 // exponent of more than nine digits). This is not strtod: for long numbers with an exponent the two can differ in

@@ -36,8 +36,6 @@ bool known_statement(std::string_view keyword) {
     return std::find(std::begin(kKnown), std::end(kKnown), keyword) != std::end(kKnown);
 }
 
-bool is_digit(char c) { return c >= '0' && c <= '9'; }
-
 // An index as the checks read it: strtol over the whole part, which ends early at a NUL byte as a C string does.
 // The usual part, a sign and at most 18 digits, is read here to the same value without copying it for strtol.
 std::optional<long> index_in(std::string_view part) {

@@ -281,14 +281,16 @@ void Shader::shade_many(const uint32_t* triangle, const glm::vec3* bary, size_t 
     for (size_t start = 0; start < count; start += kLightingBatch) {
         const size_t n = std::min(kLightingBatch, count - start);
         light_batch(triangle + start, bary + start, n, batch);
+        auto terms_of = [](size_t j) -> LightingTerms {  // batch is thread_local: no capture
+            return {glm::vec3(batch.diffuse[0][j], batch.diffuse[1][j], batch.diffuse[2][j]),
+                    glm::vec3(batch.specular[0][j], batch.specular[1][j], batch.specular[2][j])};
+        };
         if (!textures_.empty()) {
             for (size_t j = 0; j < n; ++j) {
                 const uint32_t tri = triangle[start + j];
-                const glm::vec3 diffuse(batch.diffuse[0][j], batch.diffuse[1][j], batch.diffuse[2][j]);
-                const glm::vec3 specular(batch.specular[0][j], batch.specular[1][j], batch.specular[2][j]);
                 glm::vec3 texel(1.0f);
                 const bool textured = texture_factor(tri, bary[start + j], texel);
-                out[start + j] = lit_color(tri, bary[start + j], textured ? &texel : nullptr, {diffuse, specular});
+                out[start + j] = lit_color(tri, bary[start + j], textured ? &texel : nullptr, terms_of(j));
             }
             continue;
         }
@@ -298,20 +300,15 @@ void Shader::shade_many(const uint32_t* triangle, const glm::vec3* bary, size_t 
             const uint32_t run_triangle = triangle[start + j];
             const bool per_vertex = base_varies(run_triangle);
             const glm::vec3 run_base = base_color(run_triangle, glm::vec3(1.0f / 3.0f));
-            for (; j < n && triangle[start + j] == run_triangle; ++j) {
-                const glm::vec3 diffuse(batch.diffuse[0][j], batch.diffuse[1][j], batch.diffuse[2][j]);
-                const glm::vec3 specular(batch.specular[0][j], batch.specular[1][j], batch.specular[2][j]);
-                const glm::vec3 base = per_vertex ? base_color(run_triangle, bary[start + j]) : run_base;
-                out[start + j] = base * diffuse + specular;
-            }
+            for (; j < n && triangle[start + j] == run_triangle; ++j)
+                out[start + j] = lit(per_vertex ? base_color(run_triangle, bary[start + j]) : run_base, terms_of(j));
         }
     }
 }
 
 glm::vec3 Shader::lit_color(uint32_t triangle, const glm::vec3& bary, const glm::vec3* texel,
                             const LightingTerms& terms) const {
-    const glm::vec3 base = texel ? base_color(triangle, bary) * *texel : base_color(triangle, bary);
-    return base * terms.diffuse + terms.specular;
+    return lit(texel ? base_color(triangle, bary) * *texel : base_color(triangle, bary), terms);
 }
 
 glm::vec3 Shader::shade(uint32_t triangle, const glm::vec3& bary) const {

@@ -46,6 +46,10 @@ private:
     const Material& material(uint32_t triangle) const;
     // One point, every mode; Blinn-Phong and Phong only when lit by a lighting function other than the kernels'.
     glm::vec3 shade_point(uint32_t triangle, const glm::vec3& bary) const;
+    // A lit colour: base * diffuse + specular.
+    static glm::vec3 lit(const glm::vec3& base, const LightingTerms& terms) {
+        return base * terms.diffuse + terms.specular;
+    }
     // base * diffuse + specular, the base colour times the texel when there is one (Phong, Blinn-Phong, cel, Gooch).
     glm::vec3 lit_color(uint32_t triangle, const glm::vec3& bary, const glm::vec3* texel,
                         const LightingTerms& terms) const;
