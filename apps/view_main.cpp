@@ -4,8 +4,10 @@
 
 #include "apps/cli.h"
 #include "apps/command.h"
+#include "raster/core/process_heap.h"
 
 int main(int argc, char** argv) {
+    raster::prepare_process_heap();  // before any thread: a first frame that starts warm
     std::ios::sync_with_stdio(false);
     return raster::cli::run(std::vector<std::string>(argv, argv + argc), std::cout, std::cerr,
                             {raster::cli::add_view_command});
