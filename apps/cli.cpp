@@ -32,7 +32,7 @@ struct CommandLine::Parser {
             add_tradeoff_command(app),
             add_balboa_command(app),
         };
-        for (const CommandRegistrar add_command : extra_commands) commands.push_back(add_command(app));
+        for (const CommandRegistrar& add_command : extra_commands) commands.push_back(add_command(app));
     }
 };
 

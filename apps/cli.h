@@ -1,6 +1,7 @@
 // The `raster` command line: subcommands, flags, messages and exit codes (testable without a process).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -23,7 +24,7 @@ inline constexpr int kExitIoError = 3;      // the input was fine but an output 
 
 // Registers one subcommand beyond raster_cli's own (apps/command.h): the `raster` program adds `view`, which lives
 // in its own module so that nothing else linking raster_cli (the cli fuzz target, in-process tests) links a server.
-using CommandRegistrar = Command (*)(CLI::App&);
+using CommandRegistrar = std::function<Command(CLI::App&)>;
 
 // Runs `raster` with argv-style arguments (args[0] is the program name), writing to out and err.
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,

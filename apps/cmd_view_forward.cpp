@@ -6,9 +6,10 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "apps/command.h"
 #include "apps/view_flags.h"
@@ -16,25 +17,11 @@
 namespace raster::cli {
 namespace {
 
-// This process's own arguments, as the kernel keeps them (NUL-separated), so that the viewer program parses
-// exactly what `raster` was given.
-std::vector<std::string> own_arguments() {
-    std::ifstream file("/proc/self/cmdline", std::ios::binary);
-    const std::string all((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    std::vector<std::string> arguments;
-    for (size_t start = 0; start < all.size();) {
-        const size_t end = all.find('\0', start);
-        arguments.push_back(all.substr(start, end == std::string::npos ? std::string::npos : end - start));
-        start = end == std::string::npos ? all.size() : end + 1;
-    }
-    return arguments;
-}
-
-int run_viewer_program(std::ostream& out, std::ostream& err) {
+// Runs the viewer program on `arguments` (exactly what `raster` was given, so that it parses the same line).
+int run_viewer_program(std::vector<std::string> arguments, std::ostream& out, std::ostream& err) {
     std::error_code error;
     const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
     const std::filesystem::path viewer = self.parent_path() / kViewerProgram;
-    std::vector<std::string> arguments = own_arguments();
     out.flush();
     err.flush();
     if (!error && !arguments.empty()) {
@@ -44,7 +31,7 @@ int run_viewer_program(std::ostream& out, std::ostream& err) {
         execv(viewer.c_str(), argv.data());  // returns only on failure
     }
     const std::string why = error                ? "cannot find this program's folder: " + error.message()
-                            : arguments.empty() ? std::string("cannot read /proc/self/cmdline")
+                            : arguments.empty() ? std::string("no program name to run it under")
                                                 : std::string(std::strerror(errno));
     err << "raster view: error: cannot run the viewer program " << viewer.string() << ": " << why
         << " (it is built beside raster unless RASTER_BUILD_VIEWER is OFF)\n";
@@ -53,10 +40,13 @@ int run_viewer_program(std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
-Command add_view_forwarding_command(CLI::App& app) {
+Command add_view_forwarding_command(CLI::App& app, std::vector<std::string> arguments) {
     auto flags = std::make_shared<ViewFlags>();
     register_view_flags(app, *flags);
-    return {app.get_subcommand("view"), [](std::ostream& out, std::ostream& err) { return run_viewer_program(out, err); },
+    return {app.get_subcommand("view"),
+            [arguments = std::move(arguments)](std::ostream& out, std::ostream& err) {
+                return run_viewer_program(arguments, out, err);
+            },
             [flags] { *flags = ViewFlags{}; }};
 }
 

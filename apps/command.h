@@ -29,7 +29,7 @@ Command add_balboa_command(CLI::App& app);
 // links and registers (view_main.cpp, through run()'s extra commands).
 Command add_view_command(CLI::App& app);
 // `raster view` in the `raster` program (main.cpp): the same flags, checked, then the viewer program run in this
-// process's place on the same arguments (cmd_view_forward.cpp).
-Command add_view_forwarding_command(CLI::App& app);
+// process's place on `arguments`, main's argv (cmd_view_forward.cpp).
+Command add_view_forwarding_command(CLI::App& app, std::vector<std::string> arguments);
 
 }  // namespace raster::cli

@@ -9,9 +9,11 @@
 int main(int argc, char** argv) {
     raster::prepare_process_heap();  // before any thread: a first frame that starts warm
     std::ios::sync_with_stdio(false);
+    const std::vector<std::string> arguments(argv, argv + argc);
     std::vector<raster::cli::CommandRegistrar> extra_commands;
 #ifdef RASTER_WITH_VIEWER
-    extra_commands.push_back(raster::cli::add_view_forwarding_command);
+    extra_commands.push_back(
+        [&arguments](CLI::App& app) { return raster::cli::add_view_forwarding_command(app, arguments); });
 #endif
-    return raster::cli::run(std::vector<std::string>(argv, argv + argc), std::cout, std::cerr, extra_commands);
+    return raster::cli::run(arguments, std::cout, std::cerr, extra_commands);
 }

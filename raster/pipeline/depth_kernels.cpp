@@ -25,7 +25,8 @@ DepthRowResult DepthTestRow(const DepthRow& row, const uint64_t* covered, size_t
     static constexpr uint32_t kLaneBit[8] = {1, 2, 4, 8, 16, 32, 64, 128};
     const auto lane_bit = hn::LoadU(du, kLaneBit);
     const auto base1 = hn::Set(di, row.base1), base2 = hn::Set(di, row.base2);
-    const auto d0 = hn::Set(dd, row.d0), k1 = hn::Set(dd, row.d10_over_area), k2 = hn::Set(dd, row.d20_over_area);
+    const auto d0 = hn::Set(dd, row.plane.d0), k1 = hn::Set(dd, row.plane.d10_over_area),
+               k2 = hn::Set(dd, row.plane.d20_over_area);
     const auto half = hn::Set(dd, 0.5);
     const auto float_overflow = hn::Set(dd, 0x1.ffffffp+127);  // FLT_MAX + 2^103: rounds (to even) to inf
     const auto infinity = hn::Set(df, std::numeric_limits<float>::infinity());
@@ -39,7 +40,7 @@ DepthRowResult DepthTestRow(const DepthRow& row, const uint64_t* covered, size_t
         const auto e1 = hn::ConvertTo(dd, hn::Add(base1, hn::LoadU(di, row.offset1 + j)));
         const auto e2 = hn::ConvertTo(dd, hn::Add(base2, hn::LoadU(di, row.offset2 + j)));
         auto plane = hn::Add(hn::Add(d0, hn::Mul(e1, k1)), hn::Mul(e2, k2));
-        if (row.fixed24) plane = hn::Floor(hn::Add(plane, half));
+        if (row.plane.fixed24) plane = hn::Floor(hn::Add(plane, half));
         // static_cast<float>'s rounding: a double at or beyond FLT_MAX + half its ulp becomes +-inf, where
         // Highway's emulated targets (EMU128, SCALAR) clamp to +-FLT_MAX.
         const auto demoted = hn::DemoteTo(df, plane);

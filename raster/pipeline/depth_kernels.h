@@ -6,18 +6,18 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "raster/pipeline/per_sample.h"
+
 namespace raster {
 
 // Extra entries past a row the kernel may read and write back unchanged (whole vectors of up to eight lanes): the
 // depth and winner planes need this many after their last sample.
 inline constexpr size_t kDepthPadding = 8;
 
-// One triangle's depth plane over one block row (DepthPlane in per_sample.h): the key at sample j is
-// d0 + E1_j * d10_over_area + E2_j * d20_over_area in double, with the exact edge values E_i = base_i + offset_i[j]
-// (the fill-rule bias already taken out of base_i), rounded to an integer level first for fixed24, then to float.
+// One triangle's depth plane over one block row: the key at sample j is plane.at(E1_j, E2_j) (per_sample.h), with
+// the exact edge values E_i = base_i + offset_i[j] (the fill-rule bias already taken out of base_i).
 struct DepthRow {
-    double d0, d10_over_area, d20_over_area;
-    bool fixed24;
+    DepthPlane plane;
     int64_t base1, base2;                     // E1 and E2 at the row's first sample corner, without the bias
     const int64_t *offset1, *offset2;         // per sample j, with kCoveragePadding entries past n
     uint32_t triangle;                        // the index written as the winner

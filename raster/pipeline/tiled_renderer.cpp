@@ -158,8 +158,7 @@ void rasterize_in_tile(const TileJob& job, uint32_t index, int tile_x, int tile_
                     coverage_bits(base, scratch.row_offset[0].data(), scratch.row_offset[1].data(),
                                   scratch.row_offset[2].data(), n, covered, allow_simd);
                 const size_t row_start = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(bx - tile_x)) * S;
-                const DepthRow row{depth.d0, depth.d10_over_area, depth.d20_over_area, depth.fixed24,
-                                   base[1] - t.bias[1], base[2] - t.bias[2], scratch.row_offset[1].data(),
+                const DepthRow row{depth, base[1] - t.bias[1], base[2] - t.bias[2], scratch.row_offset[1].data(),
                                    scratch.row_offset[2].data(), index};
                 const DepthRowResult tested = depth_test_row(row, covered, n, scratch.winner.data() + row_start,
                                                              scratch.depth.data() + row_start, allow_simd);

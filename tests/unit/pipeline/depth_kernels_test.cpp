@@ -111,8 +111,7 @@ Outcome reference(Case c, size_t n) {
 
 Outcome kernel(Case c, size_t n, bool allow_simd) {
     const DepthPlane plane(c.setup);
-    const DepthRow row{plane.d0,        plane.d10_over_area, plane.d20_over_area, plane.fixed24, c.base1,
-                       c.base2,         c.offset1.data(),    c.offset2.data(),    kTriangle};
+    const DepthRow row{plane, c.base1, c.base2, c.offset1.data(), c.offset2.data(), kTriangle};
     const DepthRowResult result = depth_test_row(row, c.covered.data(), n, c.winner.data(), c.depth.data(), allow_simd);
     return bits_of(c.winner, c.depth, result.wrote, result.newly_filled);
 }
