@@ -53,13 +53,10 @@ ProcessHeapSetup prepare_process_heap(size_t huge_region) {
         const auto begin = reinterpret_cast<uintptr_t>(*low);
         const auto end = reinterpret_cast<uintptr_t>(*high) + block_bytes;
         const auto brk = reinterpret_cast<uintptr_t>(::sbrk(0));
-        if (begin < end && end <= brk && brk - begin <= 2 * huge_region + (size_t{64} << 20)) {
+        // Not one span of the heap means glibc fell back to mmap for some block: freeing unmaps it, and a marking
+        // would go with it, so nothing is marked.
+        if (begin < end && end <= brk && brk - begin <= 2 * huge_region + (size_t{64} << 20))
             setup.huge_bytes = mark_huge(begin, brk);
-        } else {  // not one span of the heap (glibc fell back to mmap for some): each block alone
-            for (void* block : blocks)
-                setup.huge_bytes += mark_huge(reinterpret_cast<uintptr_t>(block),
-                                              reinterpret_cast<uintptr_t>(block) + block_bytes);
-        }
     }
     for (void* block : blocks) std::free(block);
     return setup;

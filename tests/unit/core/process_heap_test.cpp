@@ -9,6 +9,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <sys/mman.h>
 
 namespace raster {
 namespace {
@@ -33,10 +34,30 @@ std::string mapping_flags(const void* p) {
     return "";
 }
 
-TEST(ProcessHeap, aFreshFrameBufferLiesInHeapMarkedForHugePages) {
-    const ProcessHeapSetup setup = prepare_process_heap();
-    if (!setup.tuned) GTEST_SKIP() << "this malloc is not glibc's (a sanitizer build?): nothing is set up";
-    if (setup.huge_bytes == 0) GTEST_SKIP() << "madvise(MADV_HUGEPAGE) is refused here";
+// Whether the kernel takes MADV_HUGEPAGE on anonymous memory: asked on a mapping of the test's own, not the heap.
+bool kernel_takes_huge_page_advice() {
+    constexpr size_t kBytes = size_t{4} << 20;
+    void* p = ::mmap(nullptr, kBytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) return false;
+    const auto aligned = (reinterpret_cast<uintptr_t>(p) + (size_t{2} << 20) - 1) & ~((size_t{2} << 20) - 1);
+    const bool taken = ::madvise(reinterpret_cast<void*>(aligned), size_t{2} << 20, MADV_HUGEPAGE) == 0;
+    ::munmap(p, kBytes);
+    return taken;
+}
+
+// Each test sets the heap up first, and skips where there is nothing to check: another malloc than glibc's, or a
+// kernel that refuses the advice.
+class ProcessHeap : public ::testing::Test {
+protected:
+    void SetUp() override {
+        setup = prepare_process_heap();
+        if (!setup.tuned) GTEST_SKIP() << "this malloc is not glibc's (a sanitizer build?): nothing is set up";
+        if (!kernel_takes_huge_page_advice()) GTEST_SKIP() << "madvise(MADV_HUGEPAGE) is refused here";
+    }
+    ProcessHeapSetup setup;
+};
+
+TEST_F(ProcessHeap, aFreshFrameBufferLiesInHeapMarkedForHugePages) {
     // A first frame's buffer: 16 MiB, carved from the reserved heap. Without the set-up glibc would mmap it, in a
     // mapping of its own without the flag, and its first touch would fault 4,096 pages one by one.
     constexpr size_t kBytes = size_t{16} << 20;
@@ -48,10 +69,7 @@ TEST(ProcessHeap, aFreshFrameBufferLiesInHeapMarkedForHugePages) {
     EXPECT_NE(flags.find(" hg "), std::string::npos) << "VmFlags:" << flags;
 }
 
-TEST(ProcessHeap, marksMostOfTheRegionAskedFor) {
-    const ProcessHeapSetup setup = prepare_process_heap();
-    if (!setup.tuned) GTEST_SKIP() << "this malloc is not glibc's (a sanitizer build?): nothing is set up";
-    if (setup.huge_bytes == 0) GTEST_SKIP() << "madvise(MADV_HUGEPAGE) is refused here";
+TEST_F(ProcessHeap, marksMostOfTheRegionAskedFor) {
     // Five blocks of 30 MiB and the 16 MiB top pad, less at most a huge page at each end of the span.
     EXPECT_GE(setup.huge_bytes, size_t{128} << 20);
     EXPECT_LE(setup.huge_bytes, size_t{200} << 20);
