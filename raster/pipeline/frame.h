@@ -8,6 +8,7 @@
 
 #include "raster/image/image.h"
 #include "raster/pipeline/setup.h"
+#include "raster/pipeline/tile_bins.h"
 #include "raster/pipeline/visibility_buffer.h"
 
 namespace raster {
@@ -44,10 +45,12 @@ struct RenderStats {
 // Per-frame buffers a renderer keeps in its result, so that render_into on the same result reuses their memory
 // instead of paging in fresh memory every frame (tens of MB of triangle setups on an 80k-triangle mesh).
 struct RenderWorkspace {
-    std::vector<std::vector<TriangleSetup>> chunk_setups;
-    std::vector<TriangleSetup> setups;              // the opaque triangles' (every triangle's in an opaque scene)
+    // The opaque triangles' setups (every triangle's in an opaque scene), chunk by chunk of scene triangles in draw
+    // order: the tiled renderer reads them in place (setup_table.h).
+    std::vector<std::vector<TriangleSetup>> setup_chunks;
+    std::vector<TriangleSetup> setups;              // the reference renderer's: the chunks concatenated
     std::vector<TriangleSetup> transparent_setups;  // the transparent triangles', drawn after (transparency.h)
-    std::vector<std::vector<uint32_t>> tile_bins;  // the tiled renderer's per-tile setup lists
+    std::vector<PartBins> tile_bins;                // the tiled renderer's per-chunk tile lists
 };
 
 struct RenderResult {

@@ -5,15 +5,10 @@
 
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
+#include "raster/pipeline/setup_table.h"
 #include "raster/pipeline/transparency.h"
 
 namespace raster {
-namespace {
-
-constexpr size_t kSetupChunk = 4096;
-
-}  // namespace
-
 TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages& stages, RenderStats& stats) {
     const auto start = Clock::now();
     TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(scene.settings.shading));
@@ -24,14 +19,14 @@ TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages
 
 void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
                            bool cull, RenderStats& stats, RenderWorkspace& workspace) {
-    // Clip and set up in chunks of triangles; concatenating the chunks in order keeps the draw order.
-    const size_t chunks = (geometry.triangles.size() + kSetupChunk - 1) / kSetupChunk;
-    auto& chunk_setups = workspace.chunk_setups;
-    chunk_setups.resize(chunks);
+    // Clip and set up in chunks of triangles, each into its own list: the chunks in order keep the draw order.
+    const size_t chunks = (geometry.triangles.size() + kSetupChunkTriangles - 1) / kSetupChunkTriangles;
+    auto& chunk_setups = workspace.setup_chunks;
+    chunk_setups.resize(chunks);  // each list keeps its storage from frame to frame
     std::vector<size_t> chunk_clipped(chunks, 0);
     parallel_for(chunks, frame.threads, [&](size_t chunk) {
-        const size_t begin = chunk * kSetupChunk;
-        const size_t end = std::min(geometry.triangles.size(), begin + kSetupChunk);
+        const size_t begin = chunk * kSetupChunkTriangles;
+        const size_t end = std::min(geometry.triangles.size(), begin + kSetupChunkTriangles);
         auto& out = chunk_setups[chunk];
         out.clear();
         out.reserve(end - begin);
@@ -44,25 +39,25 @@ void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& 
             stages.setup(polygon, static_cast<uint32_t>(tri), frame, out);
         }
     });
-    // Each chunk's setups go to their place in draw order, the chunks copied in parallel.
-    std::vector<size_t> chunk_start(chunks + 1, 0);
+    stats.rasterized = 0;
     for (size_t chunk = 0; chunk < chunks; ++chunk) {
-        chunk_start[chunk + 1] = chunk_start[chunk] + chunk_setups[chunk].size();
+        stats.rasterized += chunk_setups[chunk].size();
         stats.clipped += chunk_clipped[chunk];
     }
-    std::vector<TriangleSetup>& setups = workspace.setups;
-    setups.resize(chunk_start[chunks]);  // keeps its storage from frame to frame
-    parallel_for(chunks, frame.threads, [&](size_t chunk) {
-        std::copy(chunk_setups[chunk].begin(), chunk_setups[chunk].end(), setups.begin() + chunk_start[chunk]);
-    });
-    stats.rasterized = setups.size();
+}
+
+void concatenate_setups(const std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out) {
+    out.clear();
+    for (const std::vector<TriangleSetup>& chunk : chunks) out.insert(out.end(), chunk.begin(), chunk.end());
 }
 
 std::vector<TriangleSetup> set_up_triangles(const TransformedScene& geometry, const FrameParams& frame,
                                             const PipelineStages& stages, bool cull_backfaces, RenderStats& stats) {
     RenderWorkspace workspace;
     set_up_triangles_into(geometry, frame, stages, cull_backfaces, stats, workspace);
-    return std::move(workspace.setups);
+    std::vector<TriangleSetup> setups;
+    concatenate_setups(workspace.setup_chunks, setups);
+    return setups;
 }
 
 FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
@@ -73,7 +68,7 @@ FrontEnd run_front_end(const Scene& scene, const RenderOptions& options, const P
                  frame_params_for(scene, stages.sample_offsets(settings.samples, settings.pattern), options.threads)};
     const auto start = Clock::now();
     set_up_triangles_into(out.geometry, out.frame, stages, settings.cull_backfaces, result.stats, result.workspace);
-    split_transparent_setups(transparent_triangles(scene), result.workspace.setups,
+    split_transparent_setups(transparent_triangles(scene), result.workspace.setup_chunks,
                              result.workspace.transparent_setups);
     result.stats.ms_setup = milliseconds_since(start);
     return out;

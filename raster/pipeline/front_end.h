@@ -17,16 +17,20 @@ namespace raster {
 TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages& stages, RenderStats& stats);
 
 // Culls (when cull_backfaces), clips and sets up the vertex stage's triangles in parallel chunks, kept in draw
-// order, into workspace.setups; counts clipped and rasterized triangles. The caller times it.
+// order, into workspace.setup_chunks (kSetupChunkTriangles scene triangles a chunk); counts clipped and rasterized
+// triangles. The caller times it.
 void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
                            bool cull_backfaces, RenderStats& stats, RenderWorkspace& workspace);
 
-// The same into a fresh vector.
+// The chunks' setups one after the other, into `out` (cleared first).
+void concatenate_setups(const std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out);
+
+// set_up_triangles_into's setups in one fresh vector.
 std::vector<TriangleSetup> set_up_triangles(const TransformedScene& geometry, const FrameParams& frame,
                                             const PipelineStages& stages, bool cull_backfaces, RenderStats& stats);
 
 // What the front end hands a renderer: the vertex stage's output and the frame; the setups are in the result's
-// workspace.
+// workspace, the opaque ones in setup_chunks and the transparent ones in transparent_setups.
 struct FrontEnd {
     TransformedScene geometry;
     FrameParams frame;

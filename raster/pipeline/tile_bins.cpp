@@ -1,15 +1,18 @@
 // Binning setups to tiles: each setup's bounding box in tiles, minus the tiles an edge keeps entirely outside.
 #include "raster/pipeline/tile_bins.h"
 
-namespace raster {
+#include "raster/core/parallel.h"
 
-TileBins bin_setups(const std::vector<TriangleSetup>& setups, const FrameParams& frame,
-                    std::vector<std::vector<uint32_t>>& lists) {
-    TileBins bins{(frame.width + kTileSize - 1) / kTileSize, (frame.height + kTileSize - 1) / kTileSize, lists};
-    bins.setups.resize(static_cast<size_t>(bins.tiles_x) * bins.tiles_y);
-    for (std::vector<uint32_t>& list : bins.setups) list.clear();
-    for (uint32_t index = 0; index < setups.size(); ++index) {
+namespace raster {
+namespace {
+
+// Bins the setups of one part: the (tile, reference) pairs in draw order, then counted and placed tile by tile.
+void bin_part(const TriangleSetup* setups, uint32_t count, size_t part_index, const FrameParams& frame, int tiles_x,
+              size_t tiles, PartBins& out) {
+    out.touched.clear();
+    for (uint32_t index = 0; index < count; ++index) {
         const TriangleSetup& t = setups[index];
+        const uint32_t ref = SetupTable::ref(part_index, index);
         const int tx0 = t.min_x / kTileSize, tx1 = t.max_x / kTileSize;
         const int ty0 = t.min_y / kTileSize, ty1 = t.max_y / kTileSize;
         const bool single_tile = tx0 == tx1 && ty0 == ty1;
@@ -23,9 +26,27 @@ TileBins bin_setups(const std::vector<TriangleSetup>& setups, const FrameParams&
                         outside = edge_range(t, i, x0, x1, y0, y1, frame.fixed_bits, frame.extent).max < 0;
                     if (outside) continue;
                 }
-                bins.setups[static_cast<size_t>(ty) * bins.tiles_x + tx].push_back(index);
+                out.touched.emplace_back(static_cast<uint32_t>(ty * tiles_x + tx), ref);
             }
     }
+    // A counting sort by tile, stable, so each tile's references stay in draw order.
+    out.first.assign(tiles + 1, 0);
+    for (const auto& [tile, ref] : out.touched) ++out.first[tile + 1];
+    for (size_t tile = 0; tile < tiles; ++tile) out.first[tile + 1] += out.first[tile];
+    out.refs.resize(out.touched.size());
+    for (const auto& [tile, ref] : out.touched) out.refs[out.first[tile]++] = ref;
+    for (size_t tile = tiles; tile > 0; --tile) out.first[tile] = out.first[tile - 1];  // back to each tile's start
+    out.first[0] = 0;
+}
+
+}  // namespace
+
+TileBins bin_setups(const SetupTable& table, const FrameParams& frame, int threads, std::vector<PartBins>& parts) {
+    TileBins bins{(frame.width + kTileSize - 1) / kTileSize, (frame.height + kTileSize - 1) / kTileSize, parts};
+    parts.resize(table.parts());
+    parallel_for(table.parts(), threads, [&](size_t k) {
+        bin_part(table.part(k), table.part_size(k), k, frame, bins.tiles_x, bins.tiles(), parts[k]);
+    });
     return bins;
 }
 

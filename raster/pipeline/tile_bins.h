@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "raster/pipeline/frame_params.h"
 #include "raster/pipeline/setup.h"
+#include "raster/pipeline/setup_table.h"
 
 namespace raster {
 
@@ -30,14 +32,35 @@ inline EdgeRange edge_range(const TriangleSetup& t, int i, int x0, int x1, int y
     return {base + std::min(ax_lo, ax_hi) + std::min(by_lo, by_hi), base + std::max(ax_lo, ax_hi) + std::max(by_lo, by_hi)};
 }
 
-// The tiles of the frame and, for each, the indices of the setups that may cover one of its samples.
-struct TileBins {
-    int tiles_x = 0, tiles_y = 0;
-    std::vector<std::vector<uint32_t>>& setups;  // per tile, row by row; the workspace's lists, reused frame to frame
+// One part's setups binned to the frame's tiles: tile t's references are refs[first[t]] up to refs[first[t + 1]],
+// in draw order. Kept in the workspace, so the lists' memory is reused frame to frame.
+struct PartBins {
+    std::vector<uint32_t> first;                          // tiles + 1 offsets into refs
+    std::vector<uint32_t> refs;                           // setup references (setup_table.h), tile by tile
+    std::vector<std::pair<uint32_t, uint32_t>> touched;  // binning's scratch: (tile, reference) in draw order
 };
 
-// Bins every setup to the tiles of its bounding box that no edge keeps entirely outside.
-TileBins bin_setups(const std::vector<TriangleSetup>& setups, const FrameParams& frame,
-                    std::vector<std::vector<uint32_t>>& lists);
+// The tiles of the frame and, for each, the setups that may cover one of its samples: part by part, each part's
+// list in draw order, so the parts in order give the tile's setups in draw order.
+struct TileBins {
+    int tiles_x = 0, tiles_y = 0;
+    const std::vector<PartBins>& parts;
+    // Calls fn(reference) for each setup binned to `tile`, in draw order.
+    template <class Fn>
+    void each_in_tile(size_t tile, Fn&& fn) const {
+        for (const PartBins& part : parts)
+            for (uint32_t i = part.first[tile]; i < part.first[tile + 1]; ++i) fn(part.refs[i]);
+    }
+    bool tile_empty(size_t tile) const {
+        for (const PartBins& part : parts)
+            if (part.first[tile] != part.first[tile + 1]) return false;
+        return true;
+    }
+    size_t tiles() const { return static_cast<size_t>(tiles_x) * static_cast<size_t>(tiles_y); }
+};
+
+// Bins every setup of `table` to the tiles of its bounding box that no edge keeps entirely outside, the parts in
+// parallel on `threads` threads, into `parts` (one PartBins per part of the table).
+TileBins bin_setups(const SetupTable& table, const FrameParams& frame, int threads, std::vector<PartBins>& parts);
 
 }  // namespace raster

@@ -53,7 +53,7 @@ struct TileScratch {
 };
 
 struct TileJob {
-    const std::vector<TriangleSetup>& setups;
+    const SetupTable& setups;  // the references in the bins and the winner planes name these
     const FrameParams& frame;
     const FixedSampleOffsets& offsets;  // frame.fixed_offsets
     int fixed_bits;                     // frame.fixed_bits
@@ -102,9 +102,9 @@ inline double block_min_key(const TileJob& job, const TileScratch& scratch, int 
 // Rasterizes one setup into the tile: its bounding box clipped to the tile, in 8x8-pixel blocks that are
 // skipped when an edge keeps them entirely outside and taken whole when every edge keeps them inside. A partly
 // covered block row's samples are found by the coverage kernel (coverage_kernels.h), SIMD when allowed.
-void rasterize_in_tile(const TileJob& job, uint32_t index, int tile_x, int tile_y, TileScratch& scratch,
+void rasterize_in_tile(const TileJob& job, uint32_t ref, int tile_x, int tile_y, TileScratch& scratch,
                        bool allow_simd) {
-    const TriangleSetup& t = job.setups[index];
+    const TriangleSetup& t = job.setups[ref];
     const int F = job.fixed_bits, S = job.samples;
     const int x0 = std::max(t.min_x, tile_x), x1 = std::min(t.max_x, tile_x + kTileSize - 1);
     const int y0 = std::max(t.min_y, tile_y), y1 = std::min(t.max_y, tile_y + kTileSize - 1);
@@ -159,7 +159,7 @@ void rasterize_in_tile(const TileJob& job, uint32_t index, int tile_x, int tile_
                                   scratch.row_offset[2].data(), n, covered, allow_simd);
                 const size_t row_start = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(bx - tile_x)) * S;
                 const DepthRow row{depth, base[1] - t.bias[1], base[2] - t.bias[2], scratch.row_offset[1].data(),
-                                   scratch.row_offset[2].data(), index};
+                                   scratch.row_offset[2].data(), ref};
                 const DepthRowResult tested = depth_test_row(row, covered, n, scratch.winner.data() + row_start,
                                                              scratch.depth.data() + row_start, allow_simd);
                 wrote = wrote || tested.wrote;
@@ -257,7 +257,7 @@ template <class Finish, class Empty>
 void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, bool allow_simd, bool skip_empty_tiles,
                          TileTimes& times, Finish&& finish, Empty&& empty) {
     const int samples = job.samples;
-    parallel_for(bins.setups.size(), threads, [&](size_t tile) {
+    parallel_for(bins.tiles(), threads, [&](size_t tile) {
         const auto tile_start = Clock::now();
         thread_local TileScratch scratch;
         // The planes, with room for the depth kernel's whole vectors past the last sample.
@@ -277,13 +277,14 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
         scratch.block_far.fill(kNoBound);
         scratch.block_filled.fill(0);
         scratch.hidden_blocks = 0;
-        if (bins.setups[tile].empty() && skip_empty_tiles) {
+        const bool tile_empty = bins.tile_empty(tile);
+        if (tile_empty && skip_empty_tiles) {
             empty(tile_x, tile_y);
             times.shade_ns += nanoseconds_between(tile_start, Clock::now());
             return;
         }
-        scratch.winner_dirty = !bins.setups[tile].empty();
-        for (uint32_t index : bins.setups[tile]) rasterize_in_tile(job, index, tile_x, tile_y, scratch, allow_simd);
+        scratch.winner_dirty = !tile_empty;
+        bins.each_in_tile(tile, [&](uint32_t ref) { rasterize_in_tile(job, ref, tile_x, tile_y, scratch, allow_simd); });
         const auto finish_start = Clock::now();
         finish(tile_x, tile_y, scratch);
         if (scratch.winner_dirty) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
@@ -305,8 +306,8 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
     RenderStats& stats = result.stats;
 
     auto stage_start = Clock::now();
-    const std::vector<TriangleSetup>& setups = result.workspace.setups;
-    const TileBins bins = bin_setups(setups, frame, result.workspace.tile_bins);
+    const SetupTable setups = SetupTable::of_chunks(result.workspace.setup_chunks);
+    const TileBins bins = bin_setups(setups, frame, frame.threads, result.workspace.tile_bins);
     stats.ms_setup += milliseconds_since(stage_start);  // binning is the tiled renderer's part of setup
 
     const ShadowMaps shadows = build_shadow_maps(scene, front, options, stages, stats);
@@ -353,11 +354,12 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
 
 size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
                        VisibilityBuffer& visibility) {
-    std::vector<std::vector<uint32_t>> lists;
-    const TileBins bins = bin_setups(setups, frame, lists);
+    const SetupTable table = SetupTable::of_list(setups);
+    std::vector<PartBins> lists;
+    const TileBins bins = bin_setups(table, frame, frame.threads, lists);
     const int samples = frame.samples();
     visibility.resize(frame.width, frame.height, samples);
-    const TileJob job{setups, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
+    const TileJob job{table, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
     std::atomic<size_t> hidden{0};
     TileTimes times;
     rasterize_each_tile(
@@ -372,10 +374,11 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
 
 void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
                            float* view_depth) {
-    std::vector<std::vector<uint32_t>> lists;
-    const TileBins bins = bin_setups(setups, frame, lists);
+    const SetupTable table = SetupTable::of_list(setups);
+    std::vector<PartBins> lists;
+    const TileBins bins = bin_setups(table, frame, frame.threads, lists);
     const int samples = frame.samples(), F = frame.fixed_bits;
-    const TileJob job{setups, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
+    const TileJob job{table, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
     constexpr float kEmpty = std::numeric_limits<float>::infinity();
     auto each_sample = [&](int tile_x, int tile_y, auto&& depth_of) {
         const int x1 = std::min(frame.width, tile_x + kTileSize), y1 = std::min(frame.height, tile_y + kTileSize);
@@ -393,7 +396,7 @@ void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const Frame
                     (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * samples + s;
                 const uint32_t winner = scratch.winner[at];
                 if (winner == kNoTriangle) return kEmpty;
-                return interpolate_hit(setups[winner], (int64_t{px} << F) + job.offsets.x[s],
+                return interpolate_hit(table[winner], (int64_t{px} << F) + job.offsets.x[s],
                                        (int64_t{py} << F) + job.offsets.y[s])
                     .view_depth;
             });

@@ -246,16 +246,32 @@ std::vector<uint8_t> transparent_triangles(const Scene& scene) {
     return out;
 }
 
-void split_transparent_setups(const std::vector<uint8_t>& transparent, std::vector<TriangleSetup>& setups,
-                              std::vector<TriangleSetup>& out) {
-    out.clear();
-    if (transparent.empty()) return;
+namespace {
+
+// Appends the transparent setups of `setups` to `out` and keeps the rest in place, both in draw order.
+void move_transparent_setups(const std::vector<uint8_t>& transparent, std::vector<TriangleSetup>& setups,
+                             std::vector<TriangleSetup>& out) {
     size_t kept = 0;
     for (const TriangleSetup& t : setups) {
         if (transparent[t.triangle_id]) out.push_back(t);
         else setups[kept++] = t;
     }
     setups.resize(kept);
+}
+
+}  // namespace
+
+void split_transparent_setups(const std::vector<uint8_t>& transparent, std::vector<TriangleSetup>& setups,
+                              std::vector<TriangleSetup>& out) {
+    out.clear();
+    if (!transparent.empty()) move_transparent_setups(transparent, setups, out);
+}
+
+void split_transparent_setups(const std::vector<uint8_t>& transparent,
+                              std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out) {
+    out.clear();
+    if (transparent.empty()) return;
+    for (std::vector<TriangleSetup>& chunk : chunks) move_transparent_setups(transparent, chunk, out);
 }
 
 size_t composite_transparency(const TransparencyInputs& in, Image& image) {

@@ -22,10 +22,14 @@ namespace raster {
 // transparent, so an opaque scene does no per-triangle work for transparency.
 std::vector<uint8_t> transparent_triangles(const Scene& scene);
 
-// Moves the setups of transparent triangles out of `setups` into `transparent` (cleared first); both keep their
-// draw order.
+// Moves the setups of transparent triangles out of `setups` into `out` (cleared first); both keep their draw
+// order.
 void split_transparent_setups(const std::vector<uint8_t>& transparent, std::vector<TriangleSetup>& setups,
                               std::vector<TriangleSetup>& out);
+// The same over the front end's chunks in order: each chunk keeps its opaque setups, `out` gets every chunk's
+// transparent ones.
+void split_transparent_setups(const std::vector<uint8_t>& transparent,
+                              std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out);
 
 struct TransparencyInputs {
     const std::vector<TriangleSetup>* setups = nullptr;  // the transparent ones, in draw order

@@ -111,7 +111,9 @@ void validate_scene(const Scene& scene) {
             std::snprintf(fov, sizeof fov, "%g", double(scene.camera.fov_y_degrees));
             fail(std::string("camera field of view ") + fov + " degrees is too narrow: its projection overflows float");
         }
-    if (triangle_count(scene) >= kNoTriangle) fail("too many triangles");
+    if (triangle_count(scene) > kMaxSceneTriangles)
+        fail("too many triangles: " + std::to_string(triangle_count(scene)) + " (limit " +
+             std::to_string(kMaxSceneTriangles) + ")");
     if (frame_bytes(scene.settings) + shadow_map_bytes(scene) > kMaxFrameBytes)
         fail("the frame buffers (" + std::to_string(frame_bytes(scene.settings) >> 20) + " MiB) and the shadow maps (" +
              std::to_string(shadow_map_bytes(scene) >> 20) + " MiB) need more than the " +
