@@ -51,14 +51,18 @@ inline ClipVertex intersect(const ClipVertex& inside, double d_in, const ClipVer
 
 }  // namespace
 
+bool inside_clip_volume(const glm::vec4& p, const ClipVolume& volume) {
+    return finite(p) && outcode(p, volume) == 0;
+}
+
 ClippedPolygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const ClipVolume& volume) {
     ClippedPolygon result;
     if (!finite(a) || !finite(b) || !finite(c)) return result;
     const unsigned ca = outcode(a, volume), cb = outcode(b, volume), cc = outcode(c, volume);
     if (ca & cb & cc) return result;  // all three outside one plane
-    result.vertices[0] = {a, {1.0f, 0.0f, 0.0f}};
-    result.vertices[1] = {b, {0.0f, 1.0f, 0.0f}};
-    result.vertices[2] = {c, {0.0f, 0.0f, 1.0f}};
+    result.vertices[0] = {a, kCornerBarycentrics[0]};
+    result.vertices[1] = {b, kCornerBarycentrics[1]};
+    result.vertices[2] = {c, kCornerBarycentrics[2]};
     result.count = 3;
     const unsigned crossing = ca | cb | cc;
     if (crossing == 0) return result;  // entirely inside: untouched

@@ -26,6 +26,10 @@ struct ClipVertex {
     glm::vec3 bary;
 };
 
+// The barycentric coordinates of a triangle's own vertices a, b, c in it.
+inline const std::array<glm::vec3, 3> kCornerBarycentrics = {
+    glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
+
 // In exact arithmetic each plane adds at most one vertex to a convex polygon (3 + 6 = 9); rounding can make a
 // sliver numerically non-convex, so there is room for more, and a polygon that would overflow is dropped.
 inline constexpr int kMaxClippedVertices = 16;
@@ -43,5 +47,9 @@ struct ClippedPolygon {
 // new vertices on it and stay watertight. After clipping every vertex has w >= near (> 0): no w <= 0 reaches
 // a divide.
 ClippedPolygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c, const ClipVolume& volume);
+
+// True when p is finite and inside every plane: clip_triangle passes a triangle of three such vertices through
+// untouched, and only those.
+bool inside_clip_volume(const glm::vec4& p, const ClipVolume& volume);
 
 }  // namespace raster

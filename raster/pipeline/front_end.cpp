@@ -17,8 +17,38 @@ TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages
     return geometry;
 }
 
+namespace {
+
+// Each vertex projected to the screen once, for the triangles no clip plane touches, and whether it is inside the
+// clip volume; empty when the stages are not the real clip and setup, whose fused form this is.
+struct ProjectedVertices {
+    std::vector<ScreenPoint> screen;
+    std::vector<uint8_t> inside;
+};
+
+ProjectedVertices project_vertices(const TransformedScene& geometry, const FrameParams& frame,
+                                   const PipelineStages& stages) {
+    ProjectedVertices out;
+    if (stages.clip != clip_triangle || stages.setup != setup_polygon) return out;
+    const size_t count = geometry.clip.size();
+    out.screen.resize(count);
+    out.inside.resize(count);
+    const SnapGrid grid = snap_grid(frame);
+    constexpr size_t kBatch = 16384;
+    parallel_for((count + kBatch - 1) / kBatch, frame.threads, [&](size_t batch) {
+        for (size_t i = batch * kBatch; i < std::min(count, (batch + 1) * kBatch); ++i) {
+            out.inside[i] = inside_clip_volume(geometry.clip[i], frame.clip);
+            if (out.inside[i]) out.screen[i] = project_to_screen(geometry.clip[i], frame, grid);
+        }
+    });
+    return out;
+}
+
+}  // namespace
+
 void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
                            bool cull, RenderStats& stats, RenderWorkspace& workspace) {
+    const ProjectedVertices projected = project_vertices(geometry, frame, stages);
     // Clip and set up in chunks of triangles, each into its own list: the chunks in order keep the draw order.
     const size_t chunks = (geometry.triangles.size() + kSetupChunkTriangles - 1) / kSetupChunkTriangles;
     auto& chunk_setups = workspace.setup_chunks;
@@ -34,9 +64,16 @@ void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& 
             const TriangleIndices& v = geometry.triangles[tri];
             const glm::vec4 &a = geometry.clip[v.v[0]], &b = geometry.clip[v.v[1]], &c = geometry.clip[v.v[2]];
             if (cull && !stages.faces_front(a, b, c)) continue;
+            const auto id = static_cast<uint32_t>(tri);
+            if (!projected.inside.empty() && projected.inside[v.v[0]] && projected.inside[v.v[1]] &&
+                projected.inside[v.v[2]]) {  // what clip_triangle passes through untouched
+                setup_screen_triangle({&projected.screen[v.v[0]], &projected.screen[v.v[1]], &projected.screen[v.v[2]]},
+                                      {&kCornerBarycentrics[0], &kCornerBarycentrics[1], &kCornerBarycentrics[2]}, id, frame, out);
+                continue;
+            }
             const ClippedPolygon polygon = stages.clip(a, b, c, frame.clip);
             chunk_clipped[chunk] += polygon.clipped;
-            stages.setup(polygon, static_cast<uint32_t>(tri), frame, out);
+            stages.setup(polygon, id, frame, out);
         }
     });
     stats.rasterized = 0;

@@ -14,14 +14,6 @@ namespace {
 // True when the directed edge (dx, dy) is a top or left edge for a triangle with E > 0 inside (y down).
 bool is_top_left(int64_t dx, int64_t dy) { return dy < 0 || (dy == 0 && dx > 0); }
 
-// A polygon vertex after the divide and the viewport transform.
-struct ScreenVertex {
-    int64_t x, y;
-    double depth;
-    float inv_w;
-    glm::vec3 bary;
-};
-
 // Snaps a screen coordinate to 1/2^snap_bits of a pixel (round half up), expresses it in units of
 // 1/2^fixed_bits, and clamps it to [low, high]: the viewport, or the guard band. The clip stage already keeps the
 // coordinate inside up to rounding, so the clamp only absorbs float error and guarantees the overflow bound of
@@ -62,84 +54,98 @@ bool faces_front(const glm::vec4& a, const glm::vec4& b, const glm::vec4& c) {
     return determinant > 0.0;
 }
 
+SnapGrid snap_grid(const FrameParams& frame) {
+    SnapGrid grid;
+    const int64_t extent_x = int64_t{frame.width} << frame.fixed_bits;
+    const int64_t extent_y = int64_t{frame.height} << frame.fixed_bits;
+    // The snapped range: the viewport [0, extent], widened on each side by (side - 1) / 2 extents (guard band).
+    const double margin = (frame.clip.side - 1.0) * 0.5;
+    grid.low_x = -static_cast<int64_t>(margin * static_cast<double>(extent_x));
+    grid.high_x = extent_x - grid.low_x;
+    grid.low_y = -static_cast<int64_t>(margin * static_cast<double>(extent_y));
+    grid.high_y = extent_y - grid.low_y;
+    grid.snap_scale = static_cast<double>(int64_t{1} << frame.snap_bits);
+    grid.shift = frame.fixed_bits - frame.snap_bits;
+    return grid;
+}
+
+ScreenPoint project_to_screen(const glm::vec4& p, const FrameParams& frame, const SnapGrid& grid) {
+    const double inv_w = 1.0 / static_cast<double>(p.w);  // w >= near > 0 after clipping
+    const glm::dvec2 position =
+        screen_from_ndc(static_cast<double>(p.x) * inv_w, static_cast<double>(p.y) * inv_w, frame.width, frame.height);
+    return {snap(position.x, grid.snap_scale, grid.shift, grid.low_x, grid.high_x),
+            snap(position.y, grid.snap_scale, grid.shift, grid.low_y, grid.high_y),
+            depth_key(static_cast<double>(p.z) * inv_w, frame.depth), static_cast<float>(inv_w)};
+}
+
 int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const FrameParams& frame,
                   std::vector<TriangleSetup>& out) {
     if (polygon.count < 3) return 0;
-    const int fixed_bits = frame.fixed_bits;
-    const int64_t extent_x = int64_t{frame.width} << fixed_bits;
-    const int64_t extent_y = int64_t{frame.height} << fixed_bits;
-    // The snapped range: the viewport [0, extent], widened on each side by (side - 1) / 2 extents (guard band).
-    const double margin = (frame.clip.side - 1.0) * 0.5;
-    const int64_t low_x = -static_cast<int64_t>(margin * static_cast<double>(extent_x)), high_x = extent_x - low_x;
-    const int64_t low_y = -static_cast<int64_t>(margin * static_cast<double>(extent_y)), high_y = extent_y - low_y;
-
-    const double snap_scale = static_cast<double>(int64_t{1} << frame.snap_bits);
-    const int shift = fixed_bits - frame.snap_bits;
-    ScreenVertex screen[kMaxClippedVertices];
-    for (int i = 0; i < polygon.count; ++i) {
-        const glm::vec4& p = polygon.vertices[i].position;
-        const double inv_w = 1.0 / static_cast<double>(p.w);  // w >= near > 0 after clipping
-        const glm::dvec2 position = screen_from_ndc(static_cast<double>(p.x) * inv_w, static_cast<double>(p.y) * inv_w,
-                                                    frame.width, frame.height);
-        screen[i] = {snap(position.x, snap_scale, shift, low_x, high_x), snap(position.y, snap_scale, shift, low_y, high_y),
-                     depth_key(static_cast<double>(p.z) * inv_w, frame.depth), static_cast<float>(inv_w),
-                     polygon.vertices[i].bary};
-    }
-
+    const SnapGrid grid = snap_grid(frame);
+    ScreenPoint screen[kMaxClippedVertices];
+    for (int i = 0; i < polygon.count; ++i) screen[i] = project_to_screen(polygon.vertices[i].position, frame, grid);
     int appended = 0;
-    for (int k = 1; k + 1 < polygon.count; ++k) {
-        const ScreenVertex* v[3] = {&screen[0], &screen[k], &screen[k + 1]};
-        // Twice the signed area, cross(v1 - v0, v2 - v0), in screen space (y down): < 0 is front-facing (CCW in
-        // NDC, see conventions.h).
-        int64_t area2 = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
-        if (area2 == 0) continue;  // covers no sample under the fill rule
-        if (area2 < 0) {
-            std::swap(v[1], v[2]);
-            area2 = -area2;
-        }
-        // Built in place: a TriangleSetup is some 300 bytes, and copying each one into `out` cost a seventh of
-        // set-up on 80k-triangle meshes.
-        TriangleSetup& setup = out.emplace_back();
-        setup.triangle_id = triangle_id;
-        setup.area2 = area2;
-        setup.inv_area2 = 1.0 / static_cast<double>(area2);
-        setup.affine = frame.interpolation == Interpolation::affine;
-        setup.depth_fixed24 = frame.depth == DepthFormat::fixed24;
-        for (int i = 0; i < 3; ++i) {
-            setup.x[i] = v[i]->x;
-            setup.y[i] = v[i]->y;
-            setup.depth[i] = v[i]->depth;
-            setup.inv_w[i] = v[i]->inv_w;
-            if (setup.affine) setup.vertex_depth[i] = 1.0 / static_cast<double>(v[i]->inv_w);
-            setup.bary[i] = v[i]->bary;
-        }
-        for (int i = 0; i < 3; ++i) {
-            // Edge opposite vertex i runs from vertex i+1 to vertex i+2: E(P) = cross(end - start, P - start).
-            const int s = (i + 1) % 3, e = (i + 2) % 3;
-            const int64_t dx = setup.x[e] - setup.x[s], dy = setup.y[e] - setup.y[s];
-            setup.a[i] = -dy;
-            setup.b[i] = dx;
-            setup.c[i] = dy * setup.x[s] - dx * setup.y[s];
-            setup.bias[i] = is_top_left(dx, dy) ? 0 : -1;
-        }
-        if (frame.edges == EdgeArithmetic::float32) round_edges_to_float(setup);
-        const int64_t min_x = std::min({setup.x[0], setup.x[1], setup.x[2]});
-        const int64_t max_x = std::max({setup.x[0], setup.x[1], setup.x[2]});
-        const int64_t min_y = std::min({setup.y[0], setup.y[1], setup.y[2]});
-        const int64_t max_y = std::max({setup.y[0], setup.y[1], setup.y[2]});
-        // Samples sit at offsets in [0, 1) of their pixel, so pixel p can only hold a covered sample when
-        // p <= max / 2^fixed_bits and p + 1 > min / 2^fixed_bits.
-        setup.min_x = static_cast<int>(std::max<int64_t>(min_x >> fixed_bits, 0));
-        setup.min_y = static_cast<int>(std::max<int64_t>(min_y >> fixed_bits, 0));
-        setup.max_x = static_cast<int>(std::min<int64_t>(max_x >> fixed_bits, frame.width - 1));
-        setup.max_y = static_cast<int>(std::min<int64_t>(max_y >> fixed_bits, frame.height - 1));
-        if (setup.min_x > setup.max_x || setup.min_y > setup.max_y) {
-            out.pop_back();
-            continue;
-        }
-        ++appended;
-    }
+    for (int k = 1; k + 1 < polygon.count; ++k)
+        appended += setup_screen_triangle({&screen[0], &screen[k], &screen[k + 1]},
+                                          {&polygon.vertices[0].bary, &polygon.vertices[k].bary,
+                                           &polygon.vertices[k + 1].bary},
+                                          triangle_id, frame, out);
     return appended;
+}
+
+int setup_screen_triangle(std::array<const ScreenPoint*, 3> v, std::array<const glm::vec3*, 3> bary,
+                          uint32_t triangle_id, const FrameParams& frame, std::vector<TriangleSetup>& out) {
+    const int fixed_bits = frame.fixed_bits;
+    // Twice the signed area, cross(v1 - v0, v2 - v0), in screen space (y down): < 0 is front-facing (CCW in
+    // NDC, see conventions.h).
+    int64_t area2 = (v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[1]->y - v[0]->y) * (v[2]->x - v[0]->x);
+    if (area2 == 0) return 0;  // covers no sample under the fill rule
+    if (area2 < 0) {
+        std::swap(v[1], v[2]);
+        std::swap(bary[1], bary[2]);
+        area2 = -area2;
+    }
+    // Built in place: a TriangleSetup is some 300 bytes, and copying each one into `out` cost a seventh of
+    // set-up on 80k-triangle meshes.
+    TriangleSetup& setup = out.emplace_back();
+    setup.triangle_id = triangle_id;
+    setup.area2 = area2;
+    setup.inv_area2 = 1.0 / static_cast<double>(area2);
+    setup.affine = frame.interpolation == Interpolation::affine;
+    setup.depth_fixed24 = frame.depth == DepthFormat::fixed24;
+    for (int i = 0; i < 3; ++i) {
+        setup.x[i] = v[i]->x;
+        setup.y[i] = v[i]->y;
+        setup.depth[i] = v[i]->depth;
+        setup.inv_w[i] = v[i]->inv_w;
+        if (setup.affine) setup.vertex_depth[i] = 1.0 / static_cast<double>(v[i]->inv_w);
+        setup.bary[i] = *bary[i];
+    }
+    for (int i = 0; i < 3; ++i) {
+        // Edge opposite vertex i runs from vertex i+1 to vertex i+2: E(P) = cross(end - start, P - start).
+        const int s = (i + 1) % 3, e = (i + 2) % 3;
+        const int64_t dx = setup.x[e] - setup.x[s], dy = setup.y[e] - setup.y[s];
+        setup.a[i] = -dy;
+        setup.b[i] = dx;
+        setup.c[i] = dy * setup.x[s] - dx * setup.y[s];
+        setup.bias[i] = is_top_left(dx, dy) ? 0 : -1;
+    }
+    if (frame.edges == EdgeArithmetic::float32) round_edges_to_float(setup);
+    const int64_t min_x = std::min({setup.x[0], setup.x[1], setup.x[2]});
+    const int64_t max_x = std::max({setup.x[0], setup.x[1], setup.x[2]});
+    const int64_t min_y = std::min({setup.y[0], setup.y[1], setup.y[2]});
+    const int64_t max_y = std::max({setup.y[0], setup.y[1], setup.y[2]});
+    // Samples sit at offsets in [0, 1) of their pixel, so pixel p can only hold a covered sample when
+    // p <= max / 2^fixed_bits and p + 1 > min / 2^fixed_bits.
+    setup.min_x = static_cast<int>(std::max<int64_t>(min_x >> fixed_bits, 0));
+    setup.min_y = static_cast<int>(std::max<int64_t>(min_y >> fixed_bits, 0));
+    setup.max_x = static_cast<int>(std::min<int64_t>(max_x >> fixed_bits, frame.width - 1));
+    setup.max_y = static_cast<int>(std::min<int64_t>(max_y >> fixed_bits, frame.height - 1));
+    if (setup.min_x > setup.max_x || setup.min_y > setup.max_y) {
+        out.pop_back();
+        return 0;
+    }
+    return 1;
 }
 
 }  // namespace raster

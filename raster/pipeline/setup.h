@@ -1,6 +1,7 @@
 // Setup: clipped polygon -> fixed-point triangles with edge functions, fill-rule bias and a clamped bounding box.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -41,6 +42,32 @@ struct TriangleSetup {
 //   fixed24     -(1 - d) (2^24 - 1), not rounded: the interpolated value is rounded to an integer per sample.
 inline constexpr double kFixed24Levels = 16777215.0;
 double depth_key(double reversed_z, DepthFormat format);
+
+// A vertex after the divide and the viewport transform: snapped to frame.snap_bits on the 1/2^fixed_bits grid,
+// its depth key, and 1 / w.
+struct ScreenPoint {
+    int64_t x, y;
+    double depth;
+    float inv_w;
+};
+
+// The frame's snapping, formed once: the snapped range (the viewport, or the guard band) and the grid's scale.
+struct SnapGrid {
+    int64_t low_x = 0, high_x = 0, low_y = 0, high_y = 0;
+    double snap_scale = 1.0;
+    int shift = 0;
+};
+SnapGrid snap_grid(const FrameParams& frame);
+
+// Projects a clip-space point with w > 0 to the screen: what setup_polygon does to each polygon vertex.
+ScreenPoint project_to_screen(const glm::vec4& clip, const FrameParams& frame, const SnapGrid& grid);
+
+// Sets up one screen triangle, its vertices v with their barycentrics in the original triangle, appending a setup
+// to `out` unless it is degenerate or outside the viewport. Returns the number appended (0 or 1). setup_polygon
+// runs it on each piece of the fan; the front end, on a triangle no clip plane touches, with its vertices
+// projected once for every triangle that shares them.
+int setup_screen_triangle(std::array<const ScreenPoint*, 3> v, std::array<const glm::vec3*, 3> bary,
+                          uint32_t triangle_id, const FrameParams& frame, std::vector<TriangleSetup>& out);
 
 // Projects, snaps (to frame.snap_bits, clamped to the viewport or to frame.clip's guard band) and triangulates a
 // clipped polygon as a fan from its first vertex, in the frame's edge arithmetic, interpolation and depth format,
