@@ -175,6 +175,14 @@ void rasterize_in_tile(const TileJob& job, uint32_t ref, int tile_x, int tile_y,
     }
 }
 
+// Asks for every cache line of a setup, without waiting for them.
+inline void prefetch_setup(const TriangleSetup& t) {
+    constexpr uintptr_t kLine = 64;
+    const uintptr_t first = reinterpret_cast<uintptr_t>(&t) & ~(kLine - 1);
+    const uintptr_t last = (reinterpret_cast<uintptr_t>(&t) + sizeof(TriangleSetup) - 1) & ~(kLine - 1);
+    for (uintptr_t line = first; line <= last; line += kLine) __builtin_prefetch(reinterpret_cast<const void*>(line));
+}
+
 // Shades the tile's pixels into the image and, when kept, writes its samples into the visibility buffer.
 // Without a resolver (rasterize_tiled) it only writes the visibility buffer.
 size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver* resolver, bool msaa,
@@ -284,7 +292,15 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
             return;
         }
         scratch.winner_dirty = !tile_empty;
-        bins.each_in_tile(tile, [&](uint32_t ref) { rasterize_in_tile(job, ref, tile_x, tile_y, scratch, allow_simd); });
+        // One setup behind the bins, so that the next setup's lines are on their way while this one is drawn: the
+        // front end wrote them long before, and its first read was the tile loop's largest stall.
+        uint32_t pending = kNoTriangle;
+        bins.each_in_tile(tile, [&](uint32_t ref) {
+            prefetch_setup(job.setups[ref]);
+            if (pending != kNoTriangle) rasterize_in_tile(job, pending, tile_x, tile_y, scratch, allow_simd);
+            pending = ref;
+        });
+        if (pending != kNoTriangle) rasterize_in_tile(job, pending, tile_x, tile_y, scratch, allow_simd);
         const auto finish_start = Clock::now();
         finish(tile_x, tile_y, scratch);
         if (scratch.winner_dirty) std::fill(scratch.winner.begin(), scratch.winner.end(), kNoTriangle);
