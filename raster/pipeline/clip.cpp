@@ -65,7 +65,7 @@ ClippedPolygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::
     result.vertices[2] = {c, kCornerBarycentrics[2]};
     result.count = 3;
     const unsigned crossing = ca | cb | cc;
-    if (crossing == 0) return result;  // entirely inside: untouched
+    if (crossing == 0) return result;  // entirely inside: untouched (the front end's shortcut, inside_clip_volume)
     result.clipped = true;
 
     std::array<ClipVertex, kMaxClippedVertices> scratch;

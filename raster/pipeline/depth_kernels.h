@@ -20,7 +20,7 @@ struct DepthRow {
     DepthPlane plane;
     int64_t base1, base2;                     // E1 and E2 at the row's first sample corner, without the bias
     const int64_t *offset1, *offset2;         // per sample j, with kCoveragePadding entries past n
-    uint32_t triangle;                        // the index written as the winner
+    uint32_t triangle;                        // written as the winner: the setup's reference (setup_table.h)
 };
 
 struct DepthRowResult {

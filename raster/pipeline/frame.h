@@ -44,13 +44,21 @@ struct RenderStats {
 
 // Per-frame buffers a renderer keeps in its result, so that render_into on the same result reuses their memory
 // instead of paging in fresh memory every frame (tens of MB of triangle setups on an 80k-triangle mesh).
+// Each vertex of the frame projected to the screen once (setup.h), and whether it is inside the clip volume: the
+// front end sets up a triangle of three inside vertices from these, without clipping it.
+struct ProjectedVertices {
+    std::vector<ScreenPoint> screen;
+    std::vector<uint8_t> inside;
+};
+
 struct RenderWorkspace {
+    ProjectedVertices projected;  // the front end's
     // The opaque triangles' setups (every triangle's in an opaque scene), chunk by chunk of scene triangles in draw
     // order: the tiled renderer reads them in place (setup_table.h).
     std::vector<std::vector<TriangleSetup>> setup_chunks;
     std::vector<TriangleSetup> setups;              // the reference renderer's: the chunks concatenated
     std::vector<TriangleSetup> transparent_setups;  // the transparent triangles', drawn after (transparency.h)
-    std::vector<PartBins> tile_bins;                // the tiled renderer's per-chunk tile lists
+    std::vector<BinGroup> tile_bins;                // the tiled renderer's tile lists (tile_bins.h)
 };
 
 struct RenderResult {

@@ -20,16 +20,12 @@ TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages
 namespace {
 
 // Each vertex projected to the screen once, for the triangles no clip plane touches, and whether it is inside the
-// clip volume; empty when the stages are not the real clip and setup, whose fused form this is.
-struct ProjectedVertices {
-    std::vector<ScreenPoint> screen;
-    std::vector<uint8_t> inside;
-};
-
-ProjectedVertices project_vertices(const TransformedScene& geometry, const FrameParams& frame,
-                                   const PipelineStages& stages) {
-    ProjectedVertices out;
-    if (stages.clip != clip_triangle || stages.setup != setup_polygon) return out;
+// clip volume, into `out`; left empty when the stages are not the real clip and setup, whose fused form this is.
+void project_vertices(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
+                      ProjectedVertices& out) {
+    out.screen.clear();
+    out.inside.clear();
+    if (stages.clip != clip_triangle || stages.setup != setup_polygon) return;
     const size_t count = geometry.clip.size();
     out.screen.resize(count);
     out.inside.resize(count);
@@ -41,14 +37,14 @@ ProjectedVertices project_vertices(const TransformedScene& geometry, const Frame
             if (out.inside[i]) out.screen[i] = project_to_screen(geometry.clip[i], frame, grid);
         }
     });
-    return out;
 }
 
 }  // namespace
 
 void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
                            bool cull, RenderStats& stats, RenderWorkspace& workspace) {
-    const ProjectedVertices projected = project_vertices(geometry, frame, stages);
+    ProjectedVertices& projected = workspace.projected;
+    project_vertices(geometry, frame, stages, projected);
     // Clip and set up in chunks of triangles, each into its own list: the chunks in order keep the draw order.
     const size_t chunks = (geometry.triangles.size() + kSetupChunkTriangles - 1) / kSetupChunkTriangles;
     auto& chunk_setups = workspace.setup_chunks;
@@ -67,8 +63,10 @@ void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& 
             const auto id = static_cast<uint32_t>(tri);
             if (!projected.inside.empty() && projected.inside[v.v[0]] && projected.inside[v.v[1]] &&
                 projected.inside[v.v[2]]) {  // what clip_triangle passes through untouched
-                setup_screen_triangle({&projected.screen[v.v[0]], &projected.screen[v.v[1]], &projected.screen[v.v[2]]},
-                                      {&kCornerBarycentrics[0], &kCornerBarycentrics[1], &kCornerBarycentrics[2]}, id, frame, out);
+                const std::array<const ScreenPoint*, 3> screen = {&projected.screen[v.v[0]], &projected.screen[v.v[1]],
+                                                                  &projected.screen[v.v[2]]};
+                setup_screen_triangle(screen, {&kCornerBarycentrics[0], &kCornerBarycentrics[1], &kCornerBarycentrics[2]},
+                                      id, frame, out);
                 continue;
             }
             const ClippedPolygon polygon = stages.clip(a, b, c, frame.clip);
@@ -83,9 +81,14 @@ void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& 
     }
 }
 
-void concatenate_setups(const std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out) {
-    out.clear();
-    for (const std::vector<TriangleSetup>& chunk : chunks) out.insert(out.end(), chunk.begin(), chunk.end());
+void concatenate_setups(const std::vector<std::vector<TriangleSetup>>& chunks, int threads,
+                        std::vector<TriangleSetup>& out) {
+    std::vector<size_t> start(chunks.size() + 1, 0);
+    for (size_t chunk = 0; chunk < chunks.size(); ++chunk) start[chunk + 1] = start[chunk] + chunks[chunk].size();
+    out.resize(start.back());  // keeps its storage from frame to frame
+    parallel_for(chunks.size(), threads, [&](size_t chunk) {
+        std::copy(chunks[chunk].begin(), chunks[chunk].end(), out.begin() + static_cast<ptrdiff_t>(start[chunk]));
+    });
 }
 
 std::vector<TriangleSetup> set_up_triangles(const TransformedScene& geometry, const FrameParams& frame,
@@ -93,7 +96,7 @@ std::vector<TriangleSetup> set_up_triangles(const TransformedScene& geometry, co
     RenderWorkspace workspace;
     set_up_triangles_into(geometry, frame, stages, cull_backfaces, stats, workspace);
     std::vector<TriangleSetup> setups;
-    concatenate_setups(workspace.setup_chunks, setups);
+    concatenate_setups(workspace.setup_chunks, frame.threads, setups);
     return setups;
 }
 

@@ -22,8 +22,9 @@ TransformedScene run_vertex_stage_timed(const Scene& scene, const PipelineStages
 void set_up_triangles_into(const TransformedScene& geometry, const FrameParams& frame, const PipelineStages& stages,
                            bool cull_backfaces, RenderStats& stats, RenderWorkspace& workspace);
 
-// The chunks' setups one after the other, into `out` (cleared first).
-void concatenate_setups(const std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out);
+// The chunks' setups one after the other, into `out` (its old contents replaced), copied on `threads` threads.
+void concatenate_setups(const std::vector<std::vector<TriangleSetup>>& chunks, int threads,
+                        std::vector<TriangleSetup>& out);
 
 // set_up_triangles_into's setups in one fresh vector.
 std::vector<TriangleSetup> set_up_triangles(const TransformedScene& geometry, const FrameParams& frame,

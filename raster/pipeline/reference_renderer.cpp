@@ -14,7 +14,7 @@ void render_reference_into(const Scene& scene, const RenderOptions& options, con
     RenderStats& stats = result.stats;
 
     auto stage_start = Clock::now();
-    concatenate_setups(result.workspace.setup_chunks, result.workspace.setups);
+    concatenate_setups(result.workspace.setup_chunks, front.frame.threads, result.workspace.setups);
     stages.reference_rasterize(result.workspace.setups, front.frame, result.visibility);
     stats.samples = result.visibility.size();
     stats.ms_raster = milliseconds_since(stage_start);

@@ -9,6 +9,7 @@
 #include "raster/core/conventions.h"
 #include "raster/pipeline/clip.h"
 #include "raster/pipeline/setup.h"
+#include "raster/scene/mesh.h"
 
 namespace raster {
 
@@ -29,11 +30,21 @@ class SetupTable {
 public:
     // Chunk k is part k: the front end's setups read in place.
     static SetupTable of_chunks(const std::vector<std::vector<TriangleSetup>>& chunks);
+    static SetupTable of_chunks(std::vector<std::vector<TriangleSetup>>&&) = delete;  // would dangle
     // One list cut into parts of 2^16, so that reference i is setups[i].
     static SetupTable of_list(const std::vector<TriangleSetup>& setups);
+    static SetupTable of_list(std::vector<TriangleSetup>&&) = delete;  // would dangle
 
     const TriangleSetup& operator[](uint32_t ref) const {
         return parts_[ref >> kSetupRefShift][ref & (kSetupsPerPart - 1)];
+    }
+    // Asks for every cache line of a setup without waiting for them: the tile loop reads setups the front end
+    // wrote megabytes earlier.
+    void prefetch(uint32_t ref) const {
+        constexpr uintptr_t kLine = 64;
+        const auto address = reinterpret_cast<uintptr_t>(&(*this)[ref]);
+        for (uintptr_t line = address & ~(kLine - 1); line < address + sizeof(TriangleSetup); line += kLine)
+            __builtin_prefetch(reinterpret_cast<const void*>(line));
     }
     size_t parts() const { return parts_.size(); }
     const TriangleSetup* part(size_t k) const { return parts_[k]; }

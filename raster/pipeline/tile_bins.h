@@ -32,35 +32,38 @@ inline EdgeRange edge_range(const TriangleSetup& t, int i, int x0, int x1, int y
     return {base + std::min(ax_lo, ax_hi) + std::min(by_lo, by_hi), base + std::max(ax_lo, ax_hi) + std::max(by_lo, by_hi)};
 }
 
-// One part's setups binned to the frame's tiles: tile t's references are refs[first[t]] up to refs[first[t + 1]],
-// in draw order. Kept in the workspace, so the lists' memory is reused frame to frame.
-struct PartBins {
+// A group of consecutive parts' setups binned to the frame's tiles: tile t's references are refs[first[t]] up to
+// refs[first[t + 1]], in draw order. Kept in the workspace, so the lists' memory is reused frame to frame.
+struct BinGroup {
     std::vector<uint32_t> first;                          // tiles + 1 offsets into refs
     std::vector<uint32_t> refs;                           // setup references (setup_table.h), tile by tile
     std::vector<std::pair<uint32_t, uint32_t>> touched;  // binning's scratch: (tile, reference) in draw order
 };
 
-// The tiles of the frame and, for each, the setups that may cover one of its samples: part by part, each part's
-// list in draw order, so the parts in order give the tile's setups in draw order.
+// The tiles of the frame and, for each, the setups that may cover one of its samples: group by group of parts, each
+// group's list in draw order, so the groups in order give the tile's setups in draw order.
 struct TileBins {
     int tiles_x = 0, tiles_y = 0;
-    const std::vector<PartBins>& parts;
+    const std::vector<BinGroup>& groups;
     // Calls fn(reference) for each setup binned to `tile`, in draw order.
     template <class Fn>
     void each_in_tile(size_t tile, Fn&& fn) const {
-        for (const PartBins& part : parts)
-            for (uint32_t i = part.first[tile]; i < part.first[tile + 1]; ++i) fn(part.refs[i]);
+        for (const BinGroup& group : groups)
+            for (uint32_t i = group.first[tile]; i < group.first[tile + 1]; ++i) fn(group.refs[i]);
     }
     bool tile_empty(size_t tile) const {
-        for (const PartBins& part : parts)
-            if (part.first[tile] != part.first[tile + 1]) return false;
+        for (const BinGroup& group : groups)
+            if (group.first[tile] != group.first[tile + 1]) return false;
         return true;
     }
     size_t tiles() const { return static_cast<size_t>(tiles_x) * static_cast<size_t>(tiles_y); }
 };
 
-// Bins every setup of `table` to the tiles of its bounding box that no edge keeps entirely outside, the parts in
-// parallel on `threads` threads, into `parts` (one PartBins per part of the table).
-TileBins bin_setups(const SetupTable& table, const FrameParams& frame, int threads, std::vector<PartBins>& parts);
+// How many groups of consecutive parts binning makes at most (fewer when the table has fewer parts).
+inline constexpr size_t kBinGroups = 16;
+
+// Bins every setup of `table` to the tiles of its bounding box that no edge keeps entirely outside, in groups of
+// consecutive parts binned in parallel on `threads` threads, into `groups` (one BinGroup per group).
+TileBins bin_setups(const SetupTable& table, const FrameParams& frame, int threads, std::vector<BinGroup>& groups);
 
 }  // namespace raster

@@ -175,14 +175,6 @@ void rasterize_in_tile(const TileJob& job, uint32_t ref, int tile_x, int tile_y,
     }
 }
 
-// Asks for every cache line of a setup, without waiting for them.
-inline void prefetch_setup(const TriangleSetup& t) {
-    constexpr uintptr_t kLine = 64;
-    const uintptr_t first = reinterpret_cast<uintptr_t>(&t) & ~(kLine - 1);
-    const uintptr_t last = (reinterpret_cast<uintptr_t>(&t) + sizeof(TriangleSetup) - 1) & ~(kLine - 1);
-    for (uintptr_t line = first; line <= last; line += kLine) __builtin_prefetch(reinterpret_cast<const void*>(line));
-}
-
 // Shades the tile's pixels into the image and, when kept, writes its samples into the visibility buffer.
 // Without a resolver (rasterize_tiled) it only writes the visibility buffer.
 size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver* resolver, bool msaa,
@@ -296,7 +288,7 @@ void rasterize_each_tile(const TileJob& job, const TileBins& bins, int threads, 
         // front end wrote them long before, and its first read was the tile loop's largest stall.
         uint32_t pending = kNoTriangle;
         bins.each_in_tile(tile, [&](uint32_t ref) {
-            prefetch_setup(job.setups[ref]);
+            job.setups.prefetch(ref);
             if (pending != kNoTriangle) rasterize_in_tile(job, pending, tile_x, tile_y, scratch, allow_simd);
             pending = ref;
         });
@@ -371,7 +363,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
 size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
                        VisibilityBuffer& visibility) {
     const SetupTable table = SetupTable::of_list(setups);
-    std::vector<PartBins> lists;
+    std::vector<BinGroup> lists;
     const TileBins bins = bin_setups(table, frame, frame.threads, lists);
     const int samples = frame.samples();
     visibility.resize(frame.width, frame.height, samples);
@@ -391,7 +383,7 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
 void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
                            float* view_depth) {
     const SetupTable table = SetupTable::of_list(setups);
-    std::vector<PartBins> lists;
+    std::vector<BinGroup> lists;
     const TileBins bins = bin_setups(table, frame, frame.threads, lists);
     const int samples = frame.samples(), F = frame.fixed_bits;
     const TileJob job{table, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};

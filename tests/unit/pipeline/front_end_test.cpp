@@ -89,16 +89,31 @@ TEST(FrontEnd, setsUpEveryTriangleAsTheClipAndSetupStagesDoOneAtATime) {
         }
 }
 
-ClippedPolygon clip_away(const glm::vec4&, const glm::vec4&, const glm::vec4&, const ClipVolume&) { return {}; }
+// Counts every call of the replaced stages below; their setups' triangles (none: each drops its triangle).
+int stage_calls = 0;
+ClippedPolygon clip_away(const glm::vec4&, const glm::vec4&, const glm::vec4&, const ClipVolume&) {
+    ++stage_calls;
+    return {};
+}
+int set_up_nothing(const ClippedPolygon&, uint32_t, const FrameParams&, std::vector<TriangleSetup>&) {
+    ++stage_calls;
+    return 0;
+}
 
-TEST(FrontEnd, aReplacedClipStageRunsOnEveryTriangle) {
+TEST(FrontEnd, aReplacedClipOrSetupStageRunsOnEveryTriangle) {
     const Scene scene = close_teapot({});
-    PipelineStages stages;
-    stages.clip = clip_away;
-    const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(scene.settings.shading));
-    const FrameParams frame = frame_params_for(scene, stages.sample_offsets(1, SamplePattern::standard), 2);
+    PipelineStages clip_replaced, setup_replaced;
+    clip_replaced.clip = clip_away;
+    setup_replaced.setup = set_up_nothing;
+    const TransformedScene geometry = clip_replaced.vertex(scene, vertex_stage_needs(scene.settings.shading));
+    const FrameParams frame = frame_params_for(scene, clip_replaced.sample_offsets(1, SamplePattern::standard), 1);
+    for (const PipelineStages& stages : {clip_replaced, setup_replaced}) {
+        RenderStats stats;
+        stage_calls = 0;
+        EXPECT_TRUE(set_up_triangles(geometry, frame, stages, false, stats).empty());
+        EXPECT_EQ(stage_calls, static_cast<int>(geometry.triangles.size()));
+    }
     RenderStats stats;
-    EXPECT_TRUE(set_up_triangles(geometry, frame, stages, false, stats).empty());
     EXPECT_GT(set_up_triangles(geometry, frame, PipelineStages{}, false, stats).size(), 1000u);
 }
 

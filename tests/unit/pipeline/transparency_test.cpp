@@ -1,6 +1,7 @@
 // Transparency: a pane's blend over the background and over an opaque surface by the compositing formula, layers in
 // depth order whatever the draw order, the weighted average's own formula, a fully transparent pane changing no
-// byte, an opaque surface in front hiding the panes, RGBA alpha, the A-buffer's cap, and panes casting no shadow.
+// byte, an opaque surface in front hiding the panes, RGBA alpha, the A-buffer's cap, panes casting no shadow, and the
+// split of the front end's chunks.
 #include "raster/pipeline/transparency.h"
 
 #include <cmath>
@@ -143,6 +144,25 @@ TEST(Transparency, panesCastNoShadow) {
     scene.meshes[1].material.opacity = 1.0f;  // the same pane opaque does
     const ShadowMaps opaque(scene, geometry.world_position, PipelineStages{}, {RasterPath::tiled, true, 2});
     EXPECT_EQ(opaque.visibility(0, {0.1f, 0.0f, 0.2f}, {0, 1, 0}), 0.0f);
+}
+
+TEST(Transparency, theChunkSplitKeepsEachChunksOpaqueSetupsAndEveryTransparentOneInDrawOrder) {
+    // Triangles 0..11 over three chunks; every third one is transparent.
+    std::vector<uint8_t> transparent(12, 0);
+    for (size_t id = 0; id < transparent.size(); id += 3) transparent[id] = 1;
+    std::vector<std::vector<TriangleSetup>> chunks(3);
+    for (uint32_t id = 0; id < 12; ++id) chunks[id / 4].emplace_back().triangle_id = id;
+    std::vector<TriangleSetup> out(5);  // stale contents, replaced
+    split_transparent_setups(transparent, chunks, out);
+    auto ids = [](const std::vector<TriangleSetup>& setups) {
+        std::vector<uint32_t> result;
+        for (const TriangleSetup& t : setups) result.push_back(t.triangle_id);
+        return result;
+    };
+    EXPECT_EQ(ids(out), (std::vector<uint32_t>{0, 3, 6, 9}));
+    EXPECT_EQ(ids(chunks[0]), (std::vector<uint32_t>{1, 2}));
+    EXPECT_EQ(ids(chunks[1]), (std::vector<uint32_t>{4, 5, 7}));
+    EXPECT_EQ(ids(chunks[2]), (std::vector<uint32_t>{8, 10, 11}));
 }
 
 }  // namespace
