@@ -42,8 +42,6 @@ struct RenderStats {
     size_t transparent_fragments = 0;  // transparent fragments in front of the opaque surfaces
 };
 
-// Per-frame buffers a renderer keeps in its result, so that render_into on the same result reuses their memory
-// instead of paging in fresh memory every frame (tens of MB of triangle setups on an 80k-triangle mesh).
 // Each vertex of the frame projected to the screen once (setup.h), and whether it is inside the clip volume: the
 // front end sets up a triangle of three inside vertices from these, without clipping it.
 struct ProjectedVertices {
@@ -51,6 +49,8 @@ struct ProjectedVertices {
     std::vector<uint8_t> inside;
 };
 
+// Per-frame buffers a renderer keeps in its result, so that render_into on the same result reuses their memory
+// instead of paging in fresh memory every frame (tens of MB of triangle setups on an 80k-triangle mesh).
 struct RenderWorkspace {
     ProjectedVertices projected;  // the front end's
     // The opaque triangles' setups (every triangle's in an opaque scene), chunk by chunk of scene triangles in draw
