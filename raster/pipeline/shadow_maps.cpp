@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "raster/pipeline/front_end.h"
+#include "raster/pipeline/setup_table.h"
 #include "raster/pipeline/tiled_renderer.h"
 #include "raster/pipeline/transparency.h"
 
@@ -30,24 +31,26 @@ Camera face_camera(const glm::vec3& light, int face, const ShadowClipPlanes& pla
 }
 
 // Renders one face into `depth` (resolution^2 texels): the view depth of the nearest surface at each texel centre.
-// `transparent` is transparent_triangles(scene): those cast no shadow (README "Transparency").
+// `transparent` is transparent_triangles(scene): those cast no shadow (README "Transparency"). `workspace` holds the
+// setups, reused from face to face.
 void render_face(const Scene& scene, const std::vector<uint8_t>& transparent, const Camera& camera,
-                 const PipelineStages& stages, const ShadowRenderOptions& options, int resolution, float* depth) {
+                 const PipelineStages& stages, const ShadowRenderOptions& options, int resolution,
+                 RenderWorkspace& workspace, float* depth) {
     const TransformedScene geometry = run_vertex_stage(scene, VertexStageNeeds{}, view_matrix(camera),
                                                        projection_matrix(camera, resolution, resolution));
     FrameParams frame = frame_params(resolution, resolution, kDefaultSnapBits);
     frame.clip = ClipVolume{camera.near, camera.far, 1.0};
     frame.threads = options.threads;
     RenderStats stats;
-    std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, stages, /*cull_backfaces=*/false, stats);
-    std::vector<TriangleSetup> set_aside;
-    split_transparent_setups(transparent, setups, set_aside);
+    set_up_triangles_into(geometry, frame, stages, /*cull_backfaces=*/false, stats, workspace);
+    split_transparent_setups(transparent, workspace.setup_chunks, workspace.transparent_setups);
     if (options.path == RasterPath::tiled) {
-        rasterize_depth_tiled(setups, frame, options.allow_simd, depth);
+        rasterize_depth_tiled(SetupTable::of_chunks(workspace.setup_chunks), frame, options.allow_simd, depth);
         return;
     }
+    concatenate_setups(workspace.setup_chunks, frame.threads, workspace.setups);
     VisibilityBuffer visibility;
-    stages.reference_rasterize(setups, frame, visibility);
+    stages.reference_rasterize(workspace.setups, frame, visibility);
     for (size_t i = 0; i < visibility.size(); ++i)
         depth[i] = visibility.triangle[i] == kNoTriangle ? kNoSurface : visibility.view_depth[i];
 }
@@ -72,6 +75,7 @@ ShadowMaps::ShadowMaps(const Scene& scene, const std::vector<glm::vec3>& world_p
     const int n = settings_.resolution;
     const size_t face_texels = static_cast<size_t>(n) * static_cast<size_t>(n);
     const std::vector<uint8_t> transparent = transparent_triangles(scene);
+    RenderWorkspace workspace;
     for (size_t light = 0; light < scene.lights.size(); ++light) {
         if (!scene.lights[light].shadows) continue;
         cube_of_light_[light] = static_cast<int>(cubes_.size());
@@ -82,7 +86,7 @@ ShadowMaps::ShadowMaps(const Scene& scene, const std::vector<glm::vec3>& world_p
         cube.far = planes.far;
         cube.depth.resize(kCubeFaces * face_texels);
         for (int face = 0; face < kCubeFaces; ++face)
-            render_face(scene, transparent, face_camera(cube.light, face, planes), stages, options, n,
+            render_face(scene, transparent, face_camera(cube.light, face, planes), stages, options, n, workspace,
                         cube.depth.data() + static_cast<size_t>(face) * face_texels);
     }
 }

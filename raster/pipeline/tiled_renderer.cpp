@@ -380,9 +380,7 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
     return hidden;
 }
 
-void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
-                           float* view_depth) {
-    const SetupTable table = SetupTable::of_list(setups);
+void rasterize_depth_tiled(const SetupTable& table, const FrameParams& frame, bool allow_simd, float* view_depth) {
     std::vector<BinGroup> lists;
     const TileBins bins = bin_setups(table, frame, frame.threads, lists);
     const int samples = frame.samples(), F = frame.fixed_bits;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "raster/pipeline/frame.h"
+#include "raster/pipeline/setup_table.h"
 #include "raster/pipeline/stages.h"
 
 namespace raster {
@@ -24,8 +25,8 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
                        VisibilityBuffer& visibility);
 
 // The same coverage and depth, keeping only each sample's view depth (+inf where no triangle covers it), in
-// visibility-buffer order: what a depth-only pass (a shadow map's face) needs, without the visibility buffer.
-void rasterize_depth_tiled(const std::vector<TriangleSetup>& setups, const FrameParams& frame, bool allow_simd,
-                           float* view_depth);
+// visibility-buffer order: what a depth-only pass (a shadow map's face) needs, without the visibility buffer. The
+// setups are read where they are (SetupTable::of_chunks on a front end's chunks, or of_list).
+void rasterize_depth_tiled(const SetupTable& setups, const FrameParams& frame, bool allow_simd, float* view_depth);
 
 }  // namespace raster

@@ -261,12 +261,6 @@ void move_transparent_setups(const std::vector<uint8_t>& transparent, std::vecto
 
 }  // namespace
 
-void split_transparent_setups(const std::vector<uint8_t>& transparent, std::vector<TriangleSetup>& setups,
-                              std::vector<TriangleSetup>& out) {
-    out.clear();
-    if (!transparent.empty()) move_transparent_setups(transparent, setups, out);
-}
-
 void split_transparent_setups(const std::vector<uint8_t>& transparent,
                               std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out) {
     out.clear();

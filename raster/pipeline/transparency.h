@@ -22,12 +22,8 @@ namespace raster {
 // transparent, so an opaque scene does no per-triangle work for transparency.
 std::vector<uint8_t> transparent_triangles(const Scene& scene);
 
-// Moves the setups of transparent triangles out of `setups` into `out` (cleared first); both keep their draw
-// order.
-void split_transparent_setups(const std::vector<uint8_t>& transparent, std::vector<TriangleSetup>& setups,
-                              std::vector<TriangleSetup>& out);
-// The same over the front end's chunks in order: each chunk keeps its opaque setups, `out` gets every chunk's
-// transparent ones.
+// Moves the setups of transparent triangles out of the front end's chunks into `out` (cleared first): each chunk
+// keeps its opaque setups, `out` gets every chunk's transparent ones, both in draw order.
 void split_transparent_setups(const std::vector<uint8_t>& transparent,
                               std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out);
 

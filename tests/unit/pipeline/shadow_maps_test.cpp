@@ -11,6 +11,7 @@
 
 #include "raster/core/cube_faces.h"
 #include "raster/pipeline/render.h"
+#include "raster/pipeline/setup_table.h"
 #include "raster/pipeline/vertex_stage.h"
 #include "tests/support/quad_meshes.h"
 
@@ -150,6 +151,33 @@ TEST(ShadowMaps, areTheSameFromTheTiledAndTheReferenceRasterizer) {
     size_t surfaces = 0;
     for (float d : tiled.cube(0).depth) surfaces += d != std::numeric_limits<float>::infinity();
     EXPECT_GT(surfaces, tiled.cube(0).depth.size() / 10);
+}
+
+// A grid of 2 n^2 triangles lying at height y over [x0, x0 + size] x [z0, z0 + size].
+SceneMesh level_grid(int n, float y, float x0, float z0, float size, float opacity) {
+    SceneMesh grid = test_support::grid_mesh(n, glm::vec3(0.5f), opacity);
+    for (glm::vec3& p : grid.data.positions)
+        p = glm::vec3(x0 + 0.5f * size * (p.x + 1.0f), y, z0 + 0.5f * size * (p.y + 1.0f));
+    return grid;
+}
+
+// Over several of the front end's chunks, with a transparent grid's triangles in two of them: both renderers draw
+// the map that the opaque triangles alone give.
+TEST(ShadowMaps, overManyChunksAreTheSameFromBothRasterizersAndLeaveOutTheTransparentTriangles) {
+    Scene scene = floor_scene({0.2f, 4.0f, 0.1f}, 5.0f, /*occluder=*/false);
+    scene.settings.shadows.resolution = 64;
+    scene.meshes.push_back(level_grid(50, 1.0f, -1.5f, -0.5f, 1.0f, 1.0f));  // opaque, triangles 2..5001
+    scene.meshes.push_back(level_grid(50, 2.0f, 0.5f, -0.5f, 1.0f, 0.5f));   // transparent, 5002..10001
+    scene.meshes.push_back(level_grid(10, 1.5f, -0.5f, 1.0f, 1.0f, 1.0f));   // opaque, in the third chunk
+    ASSERT_GT(triangle_count(scene), 2 * kSetupChunkTriangles);
+    const ShadowMaps tiled = maps_of(scene, RasterPath::tiled), reference = maps_of(scene, RasterPath::reference);
+    Scene opaque_only = scene;
+    opaque_only.meshes.erase(opaque_only.meshes.begin() + 2);
+    EXPECT_EQ(tiled.cube(0).depth, reference.cube(0).depth);
+    EXPECT_EQ(tiled.cube(0).depth, maps_of(opaque_only).cube(0).depth);
+    EXPECT_EQ(tiled.visibility(0, {-1.0f, 0.0f, 0.0f}, kUp), 0.0f);  // under the first opaque grid
+    EXPECT_EQ(tiled.visibility(0, {0.0f, 0.0f, 1.8f}, kUp), 0.0f);   // under the last one
+    EXPECT_EQ(tiled.visibility(0, {1.0f, 0.0f, 0.0f}, kUp), 1.0f);   // under the transparent one
 }
 
 TEST(ShadowMaps, areBuiltOnlyForTheLightsThatCastShadows) {
