@@ -33,32 +33,25 @@ void PixelResolver::background_row(uint8_t* out, int count) const {
     }
 }
 
-void PixelResolver::one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const {
-    one_triangle_each(&triangle, &bary, &out, 1);
+void ResolveBatch::clear() {
+    uniform_triangle.clear();
+    uniform_bary.clear();
+    uniform_out.clear();
+    mixed.clear();
+    triangle.clear();
+    bary.clear();
+    weight.clear();
 }
 
-void PixelResolver::one_triangle_each(const uint32_t* triangle, const glm::vec3* bary, uint8_t* const* out,
-                                      size_t count) const {
-    thread_local std::vector<glm::vec3> colors;
-    colors.resize(count);
-    shader_.shade_many(triangle, bary, count, colors.data());
-    for (size_t j = 0; j < count; ++j) write_covered(colors[j], out[j]);
-}
-
-void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const {
+void PixelResolver::add(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out, ResolveBatch& batch) const {
     // A pixel whose samples all show the same triangle (or nothing) is the common case: one shade, no search.
     const bool uniform = is_uniform(triangle, samples_);
     if (uniform && triangle[0] == kNoTriangle) return background(out);
-    if (uniform && shades_uniform_pixels_once()) return one_triangle(triangle[0], bary[0], out);
+    if (uniform && shades_uniform_pixels_once()) return add_uniform(triangle[0], bary[0], out, batch);
     // The points to shade, in sample order, each with the number of samples its colour stands for: SSAA every
     // covered sample once; MSAA the first sample of each triangle, for all of that triangle's samples.
-    thread_local std::vector<uint32_t> shade_triangle;
-    thread_local std::vector<glm::vec3> shade_bary, colors;
-    thread_local std::vector<int> weight;
-    shade_triangle.clear();
-    shade_bary.clear();
-    weight.clear();
     int covered = 0;
+    uint32_t points = 0;
     for (int s = 0; s < samples_; ++s) {
         if (triangle[s] == kNoTriangle) continue;
         ++covered;
@@ -67,15 +60,33 @@ void PixelResolver::resolve(const uint32_t* triangle, const glm::vec3* bary, uin
             if (!first_of_its_triangle(triangle, s)) continue;
             for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
         }
-        shade_triangle.push_back(triangle[s]);
-        shade_bary.push_back(bary[s]);
-        weight.push_back(count);
+        batch.triangle.push_back(triangle[s]);
+        batch.bary.push_back(bary[s]);
+        batch.weight.push_back(count);
+        ++points;
     }
-    if (covered == 0) return background(out);
-    colors.resize(shade_triangle.size());
-    shader_.shade_many(shade_triangle.data(), shade_bary.data(), shade_triangle.size(), colors.data());
+    batch.mixed.push_back({out, points, covered});
+    if (batch.triangle.size() >= kBatchPoints) finish(batch);
+}
+
+void PixelResolver::finish(ResolveBatch& batch) const {
+    const size_t uniform = batch.uniform_triangle.size();
+    batch.colors.resize(std::max(uniform, batch.triangle.size()));
+    shader_.shade_many(batch.uniform_triangle.data(), batch.uniform_bary.data(), uniform, batch.colors.data());
+    for (size_t j = 0; j < uniform; ++j) write_covered(batch.colors[j], batch.uniform_out[j]);
+    shader_.shade_many(batch.triangle.data(), batch.bary.data(), batch.triangle.size(), batch.colors.data());
+    size_t point = 0;
+    for (const ResolveBatch::MixedPixel& pixel : batch.mixed) {
+        write_mixed(&batch.colors[point], &batch.weight[point], pixel.points, pixel.covered, pixel.out);
+        point += pixel.points;
+    }
+    batch.clear();
+}
+
+void PixelResolver::write_mixed(const glm::vec3* colors, const int* weight, uint32_t points, int covered,
+                                uint8_t* out) const {
     glm::vec3 sum(0.0f);
-    for (size_t k = 0; k < colors.size(); ++k) sum += static_cast<float>(weight[k]) * colors[k];
+    for (uint32_t k = 0; k < points; ++k) sum += static_cast<float>(weight[k]) * colors[k];
     glm::vec3 color;
     if (params_.alpha) color = sum / static_cast<float>(covered);
     else color = (sum + static_cast<float>(samples_ - covered) * params_.background) / static_cast<float>(samples_);
@@ -95,10 +106,12 @@ void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, con
     size_image(image, visibility.width, visibility.height, resolver.channels());
     parallel_for(static_cast<size_t>(visibility.height), params.threads, [&](size_t row) {
         const int y = static_cast<int>(row);
+        thread_local ResolveBatch batch;
         for (int x = 0; x < visibility.width; ++x) {
             const size_t first = visibility.index(x, y, 0);
-            resolver.resolve(&visibility.triangle[first], &visibility.bary[first], image.at(x, y));
+            resolver.add(&visibility.triangle[first], &visibility.bary[first], image.at(x, y), batch);
         }
+        resolver.finish(batch);
     });
 }
 

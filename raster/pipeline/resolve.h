@@ -3,6 +3,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -19,16 +21,52 @@ struct ResolveParams {
     int threads = 0;
 };
 
-// Colours single pixels from their samples: shared by the full-frame resolve and the tiled renderer.
+// Pixels waiting to be shaded together (PixelResolver::add and finish), so that a shade_many call fills the
+// lighting kernels' lanes across pixels. Two queues, each in the order its pixels were added.
+struct ResolveBatch {
+    // Pixels every sample of which shows one triangle, shaded once (PixelResolver::add_uniform): a point each.
+    std::vector<uint32_t> uniform_triangle;
+    std::vector<glm::vec3> uniform_bary;
+    std::vector<uint8_t*> uniform_out;
+    // Every other pixel: its `points` entries of the point arrays follow the previous pixel's.
+    struct MixedPixel {
+        uint8_t* out;
+        uint32_t points;
+        int covered;  // its covered samples
+    };
+    std::vector<MixedPixel> mixed;
+    std::vector<uint32_t> triangle;
+    std::vector<glm::vec3> bary;
+    std::vector<int> weight;  // the samples each point's colour stands for
+    std::vector<glm::vec3> colors;
+    void clear();
+};
+
+// Colours pixels from their samples: shared by the full-frame resolve and the tiled renderer.
 class PixelResolver {
 public:
+    // The points either queue of a batch holds before add shades the batch: enough to fill the kernels, few enough
+    // to stay in cache.
+    static constexpr size_t kBatchPoints = 1024;
+
     PixelResolver(const Shader& shader, const ResolveParams& params, int samples);
     int channels() const { return params_.alpha ? 4 : 3; }
-    // `triangle` and `bary` hold the pixel's `samples` entries in pattern order; writes channels() bytes to out.
-    void resolve(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out) const;
-    // The two cases resolve() answers without looking at every sample: no sample covered, and (when
-    // shades_uniform_pixels_once: with MSAA or one sample) every sample on one triangle, shaded once at `bary`,
-    // the pattern's first sample.
+    // Resolves a pixel whose `samples` entries of `triangle` and `bary` are in pattern order into the channels()
+    // bytes at `out`: an empty pixel at once, any other queued in `batch` (shaded at once if the batch is full).
+    // Its bytes are final after finish(batch).
+    void add(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out, ResolveBatch& batch) const;
+    // add for a pixel known to show `triangle` in every sample when shades_uniform_pixels_once (with MSAA or one
+    // sample): shaded once at `bary`, the pattern's first sample.
+    void add_uniform(uint32_t triangle, const glm::vec3& bary, uint8_t* out, ResolveBatch& batch) const {
+        batch.uniform_triangle.push_back(triangle);
+        batch.uniform_bary.push_back(bary);
+        batch.uniform_out.push_back(out);
+        if (batch.uniform_triangle.size() >= kBatchPoints) finish(batch);
+    }
+    // Shades every point in `batch` and writes its pixels; leaves it empty.
+    void finish(ResolveBatch& batch) const;
+    bool shades_uniform_pixels_once() const { return params_.msaa || samples_ == 1; }
+    // A pixel no sample of which is covered.
     void background(uint8_t* out) const {
         for (int c = 0; c < 3; ++c) out[c] = background_[c];  // fixed counts: no library call per pixel
         if (params_.alpha) out[3] = 0;
@@ -36,14 +74,12 @@ public:
     // background() for `count` pixels side by side (a row of a tile nothing was drawn in): the same bytes, copied
     // in doubling blocks instead of written a channel at a time.
     void background_row(uint8_t* out, int count) const;
-    bool shades_uniform_pixels_once() const { return params_.msaa || samples_ == 1; }
-    void one_triangle(uint32_t triangle, const glm::vec3& bary, uint8_t* out) const;
-    // one_triangle for `count` pixels at once (their shading batched): the same bytes.
-    void one_triangle_each(const uint32_t* triangle, const glm::vec3* bary, uint8_t* const* out, size_t count) const;
 
 private:
     // A shaded colour into a pixel every sample of which it covers.
     void write_covered(const glm::vec3& color, uint8_t* out) const;
+    // The weighted mean of a pixel's `points` colours and its uncovered samples' background.
+    void write_mixed(const glm::vec3* colors, const int* weight, uint32_t points, int covered, uint8_t* out) const;
     const Shader& shader_;
     ResolveParams params_;
     int samples_;

@@ -46,10 +46,7 @@ struct TileScratch {
     std::vector<uint64_t> row_covered;
     std::vector<uint32_t> pixel_triangle;
     std::vector<glm::vec3> pixel_bary;
-    // The tile's pixels wholly covered by one triangle, shaded together once the tile is read out.
-    std::vector<uint32_t> uniform_triangle;
-    std::vector<glm::vec3> uniform_bary;
-    std::vector<uint8_t*> uniform_out;
+    ResolveBatch batch;  // the tile's covered pixels, shaded together (PixelResolver::add)
 };
 
 struct TileJob {
@@ -182,9 +179,6 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
     const int S = job.samples, F = job.fixed_bits;
     const int x1 = std::min(job.width, tile_x + kTileSize), y1 = std::min(job.height, tile_y + kTileSize);
     size_t covered = 0;
-    scratch.uniform_triangle.clear();
-    scratch.uniform_bary.clear();
-    scratch.uniform_out.clear();
     for (int py = tile_y; py < y1; ++py) {
         for (int px = tile_x; px < x1; ++px) {
             const size_t first = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * S;
@@ -206,9 +200,7 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                     const TriangleSetup& t = job.setups[winner];
                     const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[0],
                                                                   (int64_t{py} << F) + job.offsets.y[0]);
-                    scratch.uniform_triangle.push_back(t.triangle_id);
-                    scratch.uniform_bary.push_back(hit.bary);
-                    scratch.uniform_out.push_back(image->at(px, py));
+                    resolver->add_uniform(t.triangle_id, hit.bary, image->at(px, py), scratch.batch);
                     covered += static_cast<size_t>(S);
                     continue;
                 }
@@ -232,12 +224,11 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                 scratch.pixel_bary[s] = hit.bary;
                 if (visibility) store_sample(*visibility, visibility->index(px, py, s), t.triangle_id, hit);
             }
-            if (resolver) resolver->resolve(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image->at(px, py));
+            if (resolver)
+                resolver->add(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image->at(px, py), scratch.batch);
         }
     }
-    if (resolver && !scratch.uniform_triangle.empty())
-        resolver->one_triangle_each(scratch.uniform_triangle.data(), scratch.uniform_bary.data(),
-                                    scratch.uniform_out.data(), scratch.uniform_triangle.size());
+    if (resolver) resolver->finish(scratch.batch);
     return covered;
 }
 
