@@ -43,32 +43,6 @@ void ResolveBatch::clear() {
     weight.clear();
 }
 
-void PixelResolver::add(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out, ResolveBatch& batch) const {
-    // A pixel whose samples all show the same triangle (or nothing) is the common case: one shade, no search.
-    const bool uniform = is_uniform(triangle, samples_);
-    if (uniform && triangle[0] == kNoTriangle) return background(out);
-    if (uniform && shades_uniform_pixels_once()) return add_uniform(triangle[0], bary[0], out, batch);
-    // The points to shade, in sample order, each with the number of samples its colour stands for: SSAA every
-    // covered sample once; MSAA the first sample of each triangle, for all of that triangle's samples.
-    int covered = 0;
-    uint32_t points = 0;
-    for (int s = 0; s < samples_; ++s) {
-        if (triangle[s] == kNoTriangle) continue;
-        ++covered;
-        int count = 1;
-        if (params_.msaa) {
-            if (!first_of_its_triangle(triangle, s)) continue;
-            for (int later = s + 1; later < samples_; ++later) count += triangle[later] == triangle[s];
-        }
-        batch.triangle.push_back(triangle[s]);
-        batch.bary.push_back(bary[s]);
-        batch.weight.push_back(count);
-        ++points;
-    }
-    batch.mixed.push_back({out, points, covered});
-    if (batch.triangle.size() >= kBatchPoints) finish(batch);
-}
-
 void PixelResolver::finish(ResolveBatch& batch) const {
     const size_t uniform = batch.uniform_triangle.size();
     batch.colors.resize(std::max(uniform, batch.triangle.size()));

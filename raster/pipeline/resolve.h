@@ -21,6 +21,13 @@ struct ResolveParams {
     int threads = 0;
 };
 
+// True when the pixel's n samples all hold the same value (one triangle, or all empty).
+inline bool is_uniform(const uint32_t* samples, int n) {
+    for (int s = 1; s < n; ++s)
+        if (samples[s] != samples[0]) return false;
+    return true;
+}
+
 // Pixels waiting to be shaded together (PixelResolver::add and finish), so that a shade_many call fills the
 // lighting kernels' lanes across pixels. Two queues, each in the order its pixels were added.
 struct ResolveBatch {
@@ -54,7 +61,40 @@ public:
     // Resolves a pixel whose `samples` entries of `triangle` and `bary` are in pattern order into the channels()
     // bytes at `out`: an empty pixel at once, any other queued in `batch` (shaded at once if the batch is full).
     // Its bytes are final after finish(batch).
-    void add(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out, ResolveBatch& batch) const;
+    void add(const uint32_t* triangle, const glm::vec3* bary, uint8_t* out, ResolveBatch& batch) const {
+        add_with(triangle, out, batch, [bary](int s) { return bary[s]; });
+    }
+    // add with sample s's barycentrics given by bary_of(s), asked only for the samples the pixel is shaded at (a
+    // renderer that has not worked them out yet computes only those).
+    template <class BaryOf>
+    void add_with(const uint32_t* triangle, uint8_t* out, ResolveBatch& batch, BaryOf&& bary_of) const {
+        // A pixel whose samples all show the same triangle (or nothing) is the common case: one shade, no search.
+        const bool uniform = is_uniform(triangle, samples_);
+        if (uniform && triangle[0] == kNoTriangle) return background(out);
+        if (uniform && shades_uniform_pixels_once()) return add_uniform(triangle[0], bary_of(0), out, batch);
+        // The points to shade, in sample order, each with the number of samples its colour stands for: SSAA every
+        // covered sample once; MSAA the first sample of each triangle, for all of that triangle's samples.
+        const size_t first_point = batch.triangle.size();
+        int covered = 0;
+        for (int s = 0; s < samples_; ++s) {
+            const uint32_t t = triangle[s];
+            if (t == kNoTriangle) continue;
+            ++covered;
+            if (params_.msaa) {  // a triangle already among the pixel's points: one more sample for its weight
+                size_t k = first_point;
+                while (k < batch.triangle.size() && batch.triangle[k] != t) ++k;
+                if (k < batch.triangle.size()) {
+                    ++batch.weight[k];
+                    continue;
+                }
+            }
+            batch.triangle.push_back(t);
+            batch.bary.push_back(bary_of(s));
+            batch.weight.push_back(1);
+        }
+        batch.mixed.push_back({out, static_cast<uint32_t>(batch.triangle.size() - first_point), covered});
+        if (batch.triangle.size() >= kBatchPoints) finish(batch);
+    }
     // add for a pixel known to show `triangle` in every sample when shades_uniform_pixels_once (with MSAA or one
     // sample): shaded once at `bary`, the pattern's first sample.
     void add_uniform(uint32_t triangle, const glm::vec3& bary, uint8_t* out, ResolveBatch& batch) const {
@@ -85,20 +125,6 @@ private:
     int samples_;
     uint8_t background_[4];
 };
-
-// True when the pixel's n samples all hold the same value (one triangle, or all empty).
-inline bool is_uniform(const uint32_t* samples, int n) {
-    for (int s = 1; s < n; ++s)
-        if (samples[s] != samples[0]) return false;
-    return true;
-}
-
-// True when sample s is the first of the pixel's samples to show its triangle: the one MSAA shades.
-inline bool first_of_its_triangle(const uint32_t* triangle, int s) {
-    for (int earlier = 0; earlier < s; ++earlier)
-        if (triangle[earlier] == triangle[s]) return false;
-    return true;
-}
 
 // Sizes `image` for width x height pixels of `channels` bytes, reusing its storage when it fits.
 void size_image(Image& image, int width, int height, int channels);

@@ -174,14 +174,18 @@ void rasterize_in_tile(const TileJob& job, uint32_t ref, int tile_x, int tile_y,
 
 // Shades the tile's pixels into the image and, when kept, writes its samples into the visibility buffer.
 // Without a resolver (rasterize_tiled) it only writes the visibility buffer.
-size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver* resolver, bool msaa,
-                    TileScratch& scratch, Image* image, VisibilityBuffer* visibility) {
+size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver* resolver, TileScratch& scratch,
+                    Image* image, VisibilityBuffer* visibility) {
     const int S = job.samples, F = job.fixed_bits;
     const int x1 = std::min(job.width, tile_x + kTileSize), y1 = std::min(job.height, tile_y + kTileSize);
     size_t covered = 0;
     for (int py = tile_y; py < y1; ++py) {
         for (int px = tile_x; px < x1; ++px) {
             const size_t first = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * S;
+            auto hit_at = [&](int s) {  // a covered sample's hit on its winner
+                return interpolate_hit(job.setups[scratch.winner[first + s]], (int64_t{px} << F) + job.offsets.x[s],
+                                       (int64_t{py} << F) + job.offsets.y[s]);
+            };
             if (resolver && !visibility) {  // the common pixels, answered without per-sample bookkeeping
                 const uint32_t winner = scratch.winner[first];
                 const bool uniform = is_uniform(&scratch.winner[first], S);
@@ -197,35 +201,29 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                     continue;
                 }
                 if (uniform && resolver->shades_uniform_pixels_once()) {
-                    const TriangleSetup& t = job.setups[winner];
-                    const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[0],
-                                                                  (int64_t{py} << F) + job.offsets.y[0]);
-                    resolver->add_uniform(t.triangle_id, hit.bary, image->at(px, py), scratch.batch);
+                    resolver->add_uniform(job.setups[winner].triangle_id, hit_at(0).bary, image->at(px, py),
+                                          scratch.batch);
                     covered += static_cast<size_t>(S);
                     continue;
                 }
             }
             for (int s = 0; s < S; ++s) {
                 const uint32_t winner = scratch.winner[first + s];
+                scratch.pixel_triangle[s] = winner == kNoTriangle ? kNoTriangle : job.setups[winner].triangle_id;
+                covered += winner != kNoTriangle;
+                if (!visibility) continue;  // the resolver asks for the barycentrics it shades (add_with)
                 if (winner == kNoTriangle) {
-                    scratch.pixel_triangle[s] = kNoTriangle;
-                    scratch.pixel_bary[s] = glm::vec3(0.0f);
-                    if (visibility) store_empty_sample(*visibility, visibility->index(px, py, s));
+                    store_empty_sample(*visibility, visibility->index(px, py, s));
                     continue;
                 }
-                ++covered;
-                const TriangleSetup& t = job.setups[winner];
-                scratch.pixel_triangle[s] = t.triangle_id;
-                // MSAA shades only the first sample of each triangle: the others need no barycentrics unless
-                // the visibility buffer is kept.
-                if (msaa && !visibility && !first_of_its_triangle(scratch.pixel_triangle.data(), s)) continue;
-                const SampleHit hit = interpolate_hit(t, (int64_t{px} << F) + job.offsets.x[s],
-                                                              (int64_t{py} << F) + job.offsets.y[s]);
+                const SampleHit hit = hit_at(s);
                 scratch.pixel_bary[s] = hit.bary;
-                if (visibility) store_sample(*visibility, visibility->index(px, py, s), t.triangle_id, hit);
+                store_sample(*visibility, visibility->index(px, py, s), scratch.pixel_triangle[s], hit);
             }
-            if (resolver)
-                resolver->add(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), image->at(px, py), scratch.batch);
+            if (!resolver) continue;
+            uint8_t* out = image->at(px, py);
+            if (visibility) resolver->add(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), out, scratch.batch);
+            else resolver->add_with(scratch.pixel_triangle.data(), out, scratch.batch, [&](int s) { return hit_at(s).bary; });
         }
     }
     if (resolver) resolver->finish(scratch.batch);
@@ -331,7 +329,7 @@ void render_tiled_into(const Scene& scene, const RenderOptions& options, const P
     rasterize_each_tile(
         job, bins, options.threads, options.allow_simd, !visibility, times,
         [&](int tile_x, int tile_y, TileScratch& scratch) {
-            covered += resolve_tile(job, tile_x, tile_y, &resolver, settings.msaa, scratch, &image, visibility);
+            covered += resolve_tile(job, tile_x, tile_y, &resolver, scratch, &image, visibility);
             hidden += scratch.hidden_blocks;
         },
         [&](int tile_x, int tile_y) {  // nothing drawn here: background only
@@ -364,7 +362,7 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
     rasterize_each_tile(
         job, bins, frame.threads, allow_simd, false, times,
         [&](int tile_x, int tile_y, TileScratch& scratch) {
-            resolve_tile(job, tile_x, tile_y, nullptr, false, scratch, nullptr, &visibility);
+            resolve_tile(job, tile_x, tile_y, nullptr, scratch, nullptr, &visibility);
             hidden += scratch.hidden_blocks;
         },
         [](int, int) {});
