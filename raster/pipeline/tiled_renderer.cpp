@@ -105,11 +105,13 @@ void rasterize_in_tile(const TileJob& job, uint32_t ref, int tile_x, int tile_y,
     const int F = job.fixed_bits, S = job.samples;
     const int x0 = std::max(t.min_x, tile_x), x1 = std::min(t.max_x, tile_x + kTileSize - 1);
     const int y0 = std::max(t.min_y, tile_y), y1 = std::min(t.max_y, tile_y + kTileSize - 1);
+    // A block row reaches at most the box's width in pixels: a small triangle's rows need fewer offsets.
+    const int row_pixels = std::min(kBlockSize, x1 - x0 + 1);
     for (int i = 0; i < 3; ++i) {
         // Sample s of pixel k along a block row: (a k << F) + the sample's own term, that term formed once per s.
         int64_t* offset = scratch.row_offset[i].data();
         for (int s = 0; s < S; ++s) offset[s] = t.a[i] * job.offsets.x[s] + t.b[i] * job.offsets.y[s] + t.bias[i];
-        for (int k = kBlockSize - 1; k >= 0; --k) {
+        for (int k = row_pixels - 1; k >= 0; --k) {
             const int64_t pixel = t.a[i] * k << F;
             for (int s = 0; s < S; ++s) offset[static_cast<size_t>(k) * S + s] = pixel + offset[s];
         }
