@@ -81,6 +81,7 @@ void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, con
     parallel_for(static_cast<size_t>(visibility.height), params.threads, [&](size_t row) {
         const int y = static_cast<int>(row);
         thread_local ResolveBatch batch;
+        batch.clear();  // nothing left from a row that threw part-way
         for (int x = 0; x < visibility.width; ++x) {
             const size_t first = visibility.index(x, y, 0);
             resolver.add(&visibility.triangle[first], &visibility.bary[first], image.at(x, y), batch);

@@ -52,8 +52,9 @@ struct ResolveBatch {
 // Colours pixels from their samples: shared by the full-frame resolve and the tiled renderer.
 class PixelResolver {
 public:
-    // The points either queue of a batch holds before add shades the batch: enough to fill the kernels, few enough
-    // to stay in cache.
+    // Once either queue of a batch holds this many points, the add or add_uniform that filled it shades the batch
+    // (a pixel's points are queued whole, so the other queue may pass it by up to samples - 1): enough to fill the
+    // kernels, few enough to stay in cache.
     static constexpr size_t kBatchPoints = 1024;
 
     PixelResolver(const Shader& shader, const ResolveParams& params, int samples);

@@ -41,7 +41,8 @@ struct TileScratch {
     size_t hidden_blocks = 0;                                               // blocks it skipped, this tile
     bool winner_dirty = false;  // `winner` holds a tile's triangles: cleared after the tile, or before the next
     // For the samples of one block row, j = pixel * samples + sample: each edge's offset from the edge value at
-    // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the covered samples' bits.
+    // the row's first pixel corner (pixel * a << F + a * ox + b * oy + bias), and the covered samples' bits. Only
+    // the pixels the current triangle's rows reach are written; the kernels mask the rest off.
     std::vector<int64_t> row_offset[3];
     std::vector<uint64_t> row_covered;
     std::vector<uint32_t> pixel_triangle;
@@ -181,6 +182,7 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
     const int S = job.samples, F = job.fixed_bits;
     const int x1 = std::min(job.width, tile_x + kTileSize), y1 = std::min(job.height, tile_y + kTileSize);
     size_t covered = 0;
+    scratch.batch.clear();  // nothing left from a tile that threw part-way
     for (int py = tile_y; py < y1; ++py) {
         for (int px = tile_x; px < x1; ++px) {
             const size_t first = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * S;
