@@ -58,6 +58,12 @@ struct TileJob {
     int width, height, samples;         // frame.width, frame.height, frame.samples()
 };
 
+// Setup `ref`'s hit at sample s of pixel (px, py): what both read-outs of a tile's winners interpolate.
+inline SampleHit hit_at(const TileJob& job, uint32_t ref, int px, int py, int s) {
+    const int F = job.fixed_bits;
+    return interpolate_hit(job.setups[ref], (int64_t{px} << F) + job.offsets.x[s], (int64_t{py} << F) + job.offsets.y[s]);
+}
+
 // The largest value of a triangle's depth plane over the sample positions of a pixel rectangle: the plane is
 // affine, so it is at one of the rectangle's corners (extrapolated beyond the triangle, which only raises it).
 inline double max_key_over(const TriangleSetup& t, const DepthPlane& depth, int x0, int x1, int y0, int y1, int F,
@@ -179,17 +185,14 @@ void rasterize_in_tile(const TileJob& job, uint32_t ref, int tile_x, int tile_y,
 // Without a resolver (rasterize_tiled) it only writes the visibility buffer.
 size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResolver* resolver, TileScratch& scratch,
                     Image* image, VisibilityBuffer* visibility) {
-    const int S = job.samples, F = job.fixed_bits;
+    const int S = job.samples;
     const int x1 = std::min(job.width, tile_x + kTileSize), y1 = std::min(job.height, tile_y + kTileSize);
     size_t covered = 0;
     scratch.batch.clear();  // nothing left from a tile that threw part-way
     for (int py = tile_y; py < y1; ++py) {
         for (int px = tile_x; px < x1; ++px) {
             const size_t first = (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * S;
-            auto hit_at = [&](int s) {  // a covered sample's hit on its winner
-                return interpolate_hit(job.setups[scratch.winner[first + s]], (int64_t{px} << F) + job.offsets.x[s],
-                                       (int64_t{py} << F) + job.offsets.y[s]);
-            };
+            auto hit = [&](int s) { return hit_at(job, scratch.winner[first + s], px, py, s); };  // a covered sample
             if (resolver && !visibility) {  // the common pixels, answered without per-sample bookkeeping
                 const uint32_t winner = scratch.winner[first];
                 const bool uniform = is_uniform(&scratch.winner[first], S);
@@ -205,7 +208,7 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                     continue;
                 }
                 if (uniform && resolver->shades_uniform_pixels_once()) {
-                    resolver->add_uniform(job.setups[winner].triangle_id, hit_at(0).bary, image->at(px, py),
+                    resolver->add_uniform(job.setups[winner].triangle_id, hit(0).bary, image->at(px, py),
                                           scratch.batch);
                     covered += static_cast<size_t>(S);
                     continue;
@@ -220,14 +223,14 @@ size_t resolve_tile(const TileJob& job, int tile_x, int tile_y, const PixelResol
                     store_empty_sample(*visibility, visibility->index(px, py, s));
                     continue;
                 }
-                const SampleHit hit = hit_at(s);
-                scratch.pixel_bary[s] = hit.bary;
-                store_sample(*visibility, visibility->index(px, py, s), scratch.pixel_triangle[s], hit);
+                const SampleHit sample = hit(s);
+                scratch.pixel_bary[s] = sample.bary;
+                store_sample(*visibility, visibility->index(px, py, s), scratch.pixel_triangle[s], sample);
             }
             if (!resolver) continue;
             uint8_t* out = image->at(px, py);
             if (visibility) resolver->add(scratch.pixel_triangle.data(), scratch.pixel_bary.data(), out, scratch.batch);
-            else resolver->add_with(scratch.pixel_triangle.data(), out, scratch.batch, [&](int s) { return hit_at(s).bary; });
+            else resolver->add_with(scratch.pixel_triangle.data(), out, scratch.batch, [&](int s) { return hit(s).bary; });
         }
     }
     if (resolver) resolver->finish(scratch.batch);
@@ -376,7 +379,7 @@ size_t rasterize_tiled(const std::vector<TriangleSetup>& setups, const FramePara
 void rasterize_depth_tiled(const SetupTable& table, const FrameParams& frame, bool allow_simd, float* view_depth) {
     std::vector<BinGroup> lists;
     const TileBins bins = bin_setups(table, frame, frame.threads, lists);
-    const int samples = frame.samples(), F = frame.fixed_bits;
+    const int samples = frame.samples();
     const TileJob job{table, frame, frame.fixed_offsets, frame.fixed_bits, frame.width, frame.height, samples};
     constexpr float kEmpty = std::numeric_limits<float>::infinity();
     auto each_sample = [&](int tile_x, int tile_y, auto&& depth_of) {
@@ -395,9 +398,7 @@ void rasterize_depth_tiled(const SetupTable& table, const FrameParams& frame, bo
                     (static_cast<size_t>(py - tile_y) * kTileSize + static_cast<size_t>(px - tile_x)) * samples + s;
                 const uint32_t winner = scratch.winner[at];
                 if (winner == kNoTriangle) return kEmpty;
-                return interpolate_hit(table[winner], (int64_t{px} << F) + job.offsets.x[s],
-                                       (int64_t{py} << F) + job.offsets.y[s])
-                    .view_depth;
+                return hit_at(job, winner, px, py, s).view_depth;
             });
         },
         [&](int tile_x, int tile_y) { each_sample(tile_x, tile_y, [&](int, int, int) { return kEmpty; }); });
