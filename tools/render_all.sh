@@ -68,6 +68,13 @@ variants=(
   "guardband|--clipping guard-band"
   "nohiz|--hierarchical-z off --samples 2"
   "threads1|--threads 1 --samples 4"
+  "msaa16|--samples 16 --msaa"
+  "cel|--shading cel"
+  "gooch|--shading gooch --samples 4"
+  "shadows|--shadows"
+  "shadowsflat|--shadows --shading flat --samples 4"
+  "shadowsgouraud16|--shadows --shading gouraud --samples 16 --msaa --shadow-resolution 256 --pcf 3"
+  "weighted4|--transparency weighted --samples 4"
 )
 for scene in "${scenes[@]}"; do
   stem=$(basename "${scene%.*}")
@@ -77,6 +84,20 @@ for scene in "${scenes[@]}"; do
     run "$stem/$tag" render "$scene" -o image.png --depth-out depth.png --stats "${flags[@]}"
   done
   run "$stem/ppm" render "$scene" -o image.ppm
+done
+
+# The generated bench scenes (build/bench/scenes, made by tools/make_bench_meshes at build time), when present:
+# fewer settings, as each is tens of thousands of triangles.
+bench_variants=("default|" "ssaa4|--samples 4" "msaa4|--samples 4 --msaa" "msaa16|--samples 16 --msaa"
+                "shadows|--shadows --shadow-resolution 512" "threads1|--threads 1")
+for scene in "$(dirname "$raster")"/bench/scenes/*.yaml; do
+  [[ -f $scene ]] || continue
+  stem=bench_$(basename "${scene%.*}")
+  for variant in "${bench_variants[@]}"; do
+    tag=${variant%%|*}
+    read -r -a flags <<<"${variant#*|}"
+    run "$stem/$tag" render "$scene" -o image.png --stats "${flags[@]}"
+  done
 done
 
 # Seed 000: every config as its task asks (writes beside the config, so copy the folder first).
