@@ -1,4 +1,4 @@
-// The building blocks that render() does not take through PipelineStages (matrix builders, the loader's
+// The building blocks that the properties do not take through StageFunctions (matrix builders, the loader's
 // transform chain), as replaceable functions with the real ones as defaults, so checks can take them as parameters.
 #pragma once
 
@@ -29,7 +29,7 @@ std::string scene_file_with_chain(const ScaleRotateTranslate& chain, const std::
 // The model matrix the scene loader builds for that chain: parse_scene's model matrix of that file.
 glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain);
 
-// Each block is a plain function pointer; a mutant replaces one. The vertex stage of PipelineStages calls the
+// Each block is a plain function pointer; a mutant replaces one. The vertex stage of StageFunctions calls the
 // real look_at and perspective builders itself, so a mutant of one of those also replaces the vertex stage
 // with one that uses the faulty builder (vertex_faults.h has both; catalogue.cpp plugs them in together).
 struct BuildingBlocks {

@@ -18,7 +18,7 @@ const Backend& reference_backend() { return drawing_backends()[0]; }
 const Backend& production_backend() { return drawing_backends()[1]; }
 
 const Implementation& real_implementation() {
-    static const Implementation real{"real", PipelineStages{}, BuildingBlocks{}, production_backend()};
+    static const Implementation real{"real", StageFunctions{}, BuildingBlocks{}, production_backend()};
     return real;
 }
 

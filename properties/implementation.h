@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "raster/pipeline/frame.h"
-#include "raster/pipeline/stages.h"
+#include "properties/stage_functions.h"
 #include "properties/building_blocks.h"
 
 namespace raster::properties {
@@ -31,7 +31,7 @@ const Backend& reference_backend();   // the reference rasterizer, 1 thread
 
 struct Implementation {
     std::string name;                // "real"
-    PipelineStages stages;           // what render() runs
+    StageFunctions stages;           // the stages render() runs
     BuildingBlocks blocks;  // matrix builders and the loader's transform chain
     Backend backend = production_backend();  // what drawing properties rasterize and render with
 };

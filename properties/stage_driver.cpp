@@ -4,7 +4,8 @@
 
 #include <bit>
 
-#include "raster/pipeline/tiled_renderer.h"
+#include "raster/pipeline/shadow_pass.h"
+#include "raster/pipeline/tile_rasterizer.h"
 
 #include "properties/reference/documented_samples.h"
 #include "properties/printing.h"
@@ -120,7 +121,8 @@ std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
 
 ShadowMaps shadow_maps_with(const Implementation& impl, const Scene& scene, const std::vector<glm::vec3>& world_positions) {
     ++rasterizer_run_count;
-    return ShadowMaps(scene, world_positions, impl.stages, {impl.backend.path, impl.backend.allow_simd, impl.backend.threads});
+    return render_shadow_maps(scene, world_positions, raster_backend(impl.backend.path, impl.backend.allow_simd),
+                              impl.backend.threads);
 }
 
 RenderResult render_with(const Implementation& impl, const Scene& scene) {
@@ -129,10 +131,10 @@ RenderResult render_with(const Implementation& impl, const Scene& scene) {
     options.path = impl.backend.path;
     options.allow_simd = impl.backend.allow_simd;
     ++rasterizer_run_count;
-    if (scene.settings.modes.hierarchical_z == impl.backend.hierarchical_z) return render(scene, options, impl.stages);
+    if (scene.settings.modes.hierarchical_z == impl.backend.hierarchical_z) return render(scene, options);
     Scene configured = scene;
     configured.settings.modes.hierarchical_z = impl.backend.hierarchical_z;
-    return render(configured, options, impl.stages);
+    return render(configured, options);
 }
 
 }  // namespace raster::properties

@@ -86,10 +86,10 @@ VisibilityBuffer draw(const Implementation& impl, const Frame& frame, const std:
 std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
                                  const std::vector<ClipTriangle>& triangles);
 
-// render() with the implementation's stages on its backend (renderer, SIMD, hierarchical Z, threads).
+// render() on the implementation's backend (renderer, SIMD, hierarchical Z, threads).
 RenderResult render_with(const Implementation& impl, const Scene& scene);
 
-// The scene's shadow maps, rendered with the implementation's stages on its backend from the vertex stage's world
+// The scene's shadow maps, rendered by the shadow pass on the implementation's backend from the vertex stage's world
 // positions (what a frame's shading reads).
 ShadowMaps shadow_maps_with(const Implementation& impl, const Scene& scene, const std::vector<glm::vec3>& world_positions);
 

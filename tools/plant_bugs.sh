@@ -6,7 +6,7 @@ set -euo pipefail
 
 usage() {
   cat <<'EOF'
-usage: tools/plant_bugs.sh [--list] [--only NAME]... [--catalogue FILE] [--keep] [--jobs N] [--help]
+usage: tools/plant_bugs.sh [--list] [--check] [--only NAME]... [--catalogue FILE] [--keep] [--jobs N] [--help]
 
 Copies the tracked source tree (git ls-files) into a scratch folder and builds there (Release, benchmarks off) the
 targets the checks run: `raster`, the property tests and the raster and differential fuzz targets' corpus
@@ -27,6 +27,8 @@ and classes, the properties and fuzz invariants that caught it) and then the cat
 compare misses, the runner renders the scene with both builds and says whether raster's PNG and PPM bytes changed.
 
   --list            print the catalogue's entries (name: bug) and exit
+  --check           check that every selected entry is well formed and fresh (its find text occurs exactly once in
+                    its file, its scene exists) and exit, building nothing: ctest runs this
   --only NAME       run only this entry (repeatable)
   --catalogue FILE  the catalogue to run (default mutants/bugs.txt)
   --keep            keep the scratch folder (its path is printed): src/ (restored), build/ (its raster is the last
@@ -46,11 +48,12 @@ die() { echo "plant_bugs: $*" >&2; exit 2; }
 root=$(cd "$(dirname "$0")/.." && pwd)
 catalogue=$root/mutants/bugs.txt
 only=()
-keep=0 list=0 jobs=2
+keep=0 list=0 check=0 jobs=2
 while (($#)); do
   case $1 in
     --help|-h) usage; exit 0 ;;
     --list) list=1 ;;
+    --check) check=1 ;;
     --keep) keep=1 ;;
     --only) (($# >= 2)) || die_usage "--only needs a name"; only+=("$2"); shift ;;
     --catalogue) (($# >= 2)) || die_usage "--catalogue needs a file"; catalogue=$2; shift ;;
@@ -186,6 +189,10 @@ mapfile -t selected < <(order_by_file "${selected[@]}")
 
 # Every entry is checked against the worktree before anything is built, so a stale catalogue fails in seconds.
 for name in "${selected[@]}"; do check_fresh "$name" "$root"; done
+if ((check)); then
+  echo "plant_bugs: ${#selected[@]} entries well formed and fresh"
+  exit 0
+fi
 git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1 ||
   die "$root is not a git checkout (git ls-files lists the source)"
 

@@ -25,6 +25,7 @@ fi
 
 [[ $# -eq 2 ]] || { echo "usage: $0 RASTER_BINARY OUT_DIR | --compare BEFORE_DIR AFTER_DIR" >&2; exit 2; }
 raster=$(realpath "$1")
+build_dir=$(dirname "$raster")
 out=$(realpath -m "$2")
 root=$(cd "$(dirname "$0")/.." && pwd)
 rm -rf "$out"
@@ -42,6 +43,7 @@ run() {
   (cd "$dir" && "$raster" "$@" >stdout.txt 2>stderr.txt) || rc=$?
   echo "$rc" >"$dir/exit_code.txt"
   sed -i -E 's/"ms_[a-z_]+":[-0-9.e+]+/"ms":_/g' "$dir/stdout.txt"
+  sed -i "s|$build_dir/|BUILD/|g" "$dir/stdout.txt" "$dir/stderr.txt"  # the bench scenes' paths name the build
   count=$((count + 1))
 }
 
@@ -90,7 +92,7 @@ done
 # fewer settings, as each is tens of thousands of triangles.
 bench_variants=("default|" "ssaa4|--samples 4" "msaa4|--samples 4 --msaa" "msaa16|--samples 16 --msaa"
                 "shadows|--shadows --shadow-resolution 512" "threads1|--threads 1")
-for scene in "$(dirname "$raster")"/bench/scenes/*.yaml; do
+for scene in "$build_dir"/bench/scenes/*.yaml; do
   [[ -f $scene ]] || continue
   stem=bench_$(basename "${scene%.*}")
   for variant in "${bench_variants[@]}"; do

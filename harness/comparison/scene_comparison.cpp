@@ -39,7 +39,7 @@ std::string comparison_problem(const Scene& scene) {
            std::to_string(kMaxFrameBytes >> 20) + " MiB cap";
 }
 
-Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, const PipelineStages& stages) {
+Comparison compare_scene(const Scene& scene, const ComparisonOptions& options) {
     Comparison out;
     out.scene = scene.path;
     out.width = scene.settings.width;
@@ -52,13 +52,13 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, c
     render_options.path = options.raster_path;
     render_options.alpha = options.alpha;
     render_options.keep_visibility = true;
-    out.raster = render(scene, render_options, stages);
+    out.raster = render(scene, render_options);
     out.raster_ms = out.raster.stats.ms_total;
     // The colours are judged on the frame `raster render` writes, which keeps no visibility buffer and so shades
     // through its batched path; the visibility buffer above is only for the per-sample visibility check.
     RenderOptions image_options = render_options;
     image_options.keep_visibility = false;
-    out.raster.image = render(scene, image_options, stages).image;
+    out.raster.image = render(scene, image_options).image;
 
     auto start = Clock::now();
     const oracle::OracleScene geometry = oracle::oracle_scene(scene);

@@ -66,10 +66,9 @@ uint64_t comparison_bytes(const RenderSettings& settings);
 // Empty when a comparison of the scene fits the cap, else what is wrong.
 std::string comparison_problem(const Scene& scene);
 
-// Renders and compares. `stages` are raster's (a test passes a mutant's); the oracle has none of them. The scene
-// must be valid (scene/validation.h) and fit the comparison's memory cap (comparison_problem). Throws OracleError
-// if Embree fails.
-Comparison compare_scene(const Scene& scene, const ComparisonOptions& options, const PipelineStages& stages = {});
+// Renders and compares. The scene must be valid (scene/validation.h) and fit the comparison's memory cap
+// (comparison_problem). Throws OracleError if Embree fails.
+Comparison compare_scene(const Scene& scene, const ComparisonOptions& options);
 
 // {scene, width, height, samples, oracle_mode, agree, ambiguous: {edge_band, depth_tie, clip_boundary, facing},
 //  ambiguous_total, ambiguous_fraction: {...}, genuine: {visibility, barycentrics, depth, color, shadow},

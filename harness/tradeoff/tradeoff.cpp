@@ -93,10 +93,9 @@ std::vector<double> exact_triangle_areas(const Scene& scene) {
 }
 
 std::vector<uint64_t> covered_sample_counts(const Scene& scene, const TransformedScene& geometry, int threads) {
-    RenderStats stats;
     const FrameParams frame =
         frame_params_for(scene, sample_offsets(scene.settings.samples, scene.settings.pattern), threads);
-    const std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, PipelineStages{}, scene.settings.cull_backfaces, stats);
+    const std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, scene.settings.cull_backfaces);
     const int fixed_bits = frame.fixed_bits;
     const FixedSampleOffsets& offsets = frame.fixed_offsets;
     std::vector<uint64_t> per_setup(setups.size(), 0);

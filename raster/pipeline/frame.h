@@ -7,15 +7,16 @@
 #include <vector>
 
 #include "raster/image/image.h"
+#include "raster/pipeline/front_end.h"
 #include "raster/pipeline/setup.h"
 #include "raster/pipeline/tile_bins.h"
 #include "raster/pipeline/visibility_buffer.h"
 
 namespace raster {
 
-// Which renderer draws the frame: the tiled production renderer (tiled_renderer.h) or the reference full-frame
-// rasterizer it is checked against (reference_renderer.h). Both give the same bytes (tests/unit/pipeline/
-// tiled_renderer_test.cpp).
+// Which raster backend draws the frame (raster_backend.h): the tiled production renderer (tiled_renderer.h) or the
+// reference full-frame rasterizer it is checked against (reference_renderer.h). Both give the same bytes
+// (tests/unit/pipeline/tiled_renderer_test.cpp).
 enum class RasterPath { tiled, reference };
 
 struct RenderOptions {
@@ -42,23 +43,12 @@ struct RenderStats {
     size_t transparent_fragments = 0;  // transparent fragments in front of the opaque surfaces
 };
 
-// Each vertex of the frame projected to the screen once (setup.h), and whether it is inside the clip volume: the
-// front end sets up a triangle of three inside vertices from these, without clipping it.
-struct ProjectedVertices {
-    std::vector<ScreenPoint> screen;
-    std::vector<uint8_t> inside;
-};
-
 // Per-frame buffers a renderer keeps in its result, so that render_into on the same result reuses their memory
-// instead of paging in fresh memory every frame (tens of MB of triangle setups on an 80k-triangle mesh).
+// instead of paging in fresh memory every frame.
 struct RenderWorkspace {
-    ProjectedVertices projected;  // the front end's
-    // The opaque triangles' setups (every triangle's in an opaque scene), chunk by chunk of scene triangles in draw
-    // order: the tiled renderer reads them in place (setup_table.h).
-    std::vector<std::vector<TriangleSetup>> setup_chunks;
-    std::vector<TriangleSetup> setups;              // the reference renderer's: the chunks concatenated
-    std::vector<TriangleSetup> transparent_setups;  // the transparent triangles', drawn after (transparency.h)
-    std::vector<BinGroup> tile_bins;                // the tiled renderer's tile lists (tile_bins.h)
+    FrontEndSetups front_end;
+    std::vector<TriangleSetup> setups;  // the reference renderer's: the front end's chunks concatenated
+    std::vector<BinGroup> tile_bins;    // the tiled renderer's tile lists (tile_bins.h)
 };
 
 struct RenderResult {

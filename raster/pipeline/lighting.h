@@ -48,8 +48,4 @@ LightingTerms evaluate_lighting(const glm::vec3& position, const glm::vec3& norm
                                 const Material& material, const std::vector<Light>& lights,
                                 const glm::vec3& ambient_light, SpecularModel model, const float* visibility);
 
-// The signature of evaluate_lighting, so a pipeline can be given another lighting model.
-using LightingFunction = LightingTerms (*)(const glm::vec3&, const glm::vec3&, const glm::vec3&, const Material&,
-                                           const std::vector<Light>&, const glm::vec3&, SpecularModel, const float*);
-
 }  // namespace raster

@@ -1,34 +1,35 @@
-// The reference renderer: front end, reference rasterizer, then shading and resolve over the visibility buffer.
+// The reference backend: the front end's chunks concatenated, the reference rasterizer, then shading and resolve
+// over the visibility buffer.
 #include "raster/pipeline/reference_renderer.h"
 
+#include <limits>
+
 #include "raster/core/stopwatch.h"
-#include "raster/pipeline/front_end.h"
-#include "raster/pipeline/resolve.h"
+#include "raster/pipeline/reference_rasterizer.h"
 
 namespace raster {
 
-void render_reference_into(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
-                           RenderResult& result) {
-    const auto start = Clock::now();
-    const FrontEnd front = run_front_end(scene, options, stages, result);
-    RenderStats& stats = result.stats;
-
+OpaqueDrawStats ReferenceBackend::draw_opaque(const OpaqueDraw& draw, RenderResult& result) const {
+    OpaqueDrawStats stats;
     auto stage_start = Clock::now();
-    concatenate_setups(result.workspace.setup_chunks, front.frame.threads, result.workspace.setups);
-    stages.reference_rasterize(result.workspace.setups, front.frame, result.visibility);
-    stats.samples = result.visibility.size();
+    concatenate_setups(result.workspace.front_end.setup_chunks, draw.frame.threads, result.workspace.setups);
+    rasterize_reference(result.workspace.setups, draw.frame, result.visibility);
     stats.ms_raster = milliseconds_since(stage_start);
 
-    const ShadowMaps shadows = build_shadow_maps(scene, front, options, stages, stats);
     stage_start = Clock::now();
-    const Shader shader(scene, front.geometry, stages.lighting, &shadows);
-    const ResolveParams resolve = resolve_params_for(scene, options);
-    resolve_image(result.visibility, shader, resolve, result.image);
+    resolve_image(result.visibility, draw.resolver, draw.frame.threads, result.image);
     stats.ms_shade = milliseconds_since(stage_start);
-    composite_transparency_timed(scene, front, shader, resolve, result);
-
     for (uint32_t id : result.visibility.triangle) stats.covered_samples += id != kNoTriangle;
-    stats.ms_total = milliseconds_since(start);
+    return stats;
+}
+
+void ReferenceBackend::draw_depth(const FrameParams& frame, RenderWorkspace& workspace, float* view_depth) const {
+    concatenate_setups(workspace.front_end.setup_chunks, frame.threads, workspace.setups);
+    VisibilityBuffer visibility;
+    rasterize_reference(workspace.setups, frame, visibility);
+    for (size_t i = 0; i < visibility.size(); ++i)
+        view_depth[i] =
+            visibility.triangle[i] == kNoTriangle ? std::numeric_limits<float>::infinity() : visibility.view_depth[i];
 }
 
 }  // namespace raster

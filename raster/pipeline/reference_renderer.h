@@ -1,15 +1,16 @@
-// The reference renderer: the front end, the reference rasterizer over the whole frame into the visibility buffer,
-// then shading and resolve of every pixel. What the tiled renderer must equal byte for byte.
+// The reference backend: the reference rasterizer over the whole frame into the visibility buffer, then shading and
+// resolve of every pixel. What the tiled backend must equal byte for byte.
 #pragma once
 
-#include "raster/pipeline/frame.h"
-#include "raster/pipeline/stages.h"
+#include "raster/pipeline/raster_backend.h"
 
 namespace raster {
 
-// Renders the frame into `result`, reusing its buffers. Every stage of `stages` is used, reference_rasterize
-// included; options.keep_visibility is ignored (the visibility buffer is how this renderer works).
-void render_reference_into(const Scene& scene, const RenderOptions& options, const PipelineStages& stages,
-                           RenderResult& result);
+// Fills result.visibility whether or not the frame keeps it: the visibility buffer is how this backend works.
+class ReferenceBackend final : public RasterBackend {
+public:
+    OpaqueDrawStats draw_opaque(const OpaqueDraw& draw, RenderResult& result) const override;
+    void draw_depth(const FrameParams& frame, RenderWorkspace& workspace, float* view_depth) const override;
+};
 
 }  // namespace raster

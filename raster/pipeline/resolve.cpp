@@ -75,10 +75,9 @@ void size_image(Image& image, int width, int height, int channels) {
     image.pixels.resize(static_cast<size_t>(width) * height * channels);
 }
 
-void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image) {
-    const PixelResolver resolver(shader, params, visibility.samples);
+void resolve_image(const VisibilityBuffer& visibility, const PixelResolver& resolver, int threads, Image& image) {
     size_image(image, visibility.width, visibility.height, resolver.channels());
-    parallel_for(static_cast<size_t>(visibility.height), params.threads, [&](size_t row) {
+    parallel_for(static_cast<size_t>(visibility.height), threads, [&](size_t row) {
         const int y = static_cast<int>(row);
         thread_local ResolveBatch batch;
         batch.clear();  // nothing left from a row that threw part-way

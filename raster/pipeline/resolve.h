@@ -18,7 +18,6 @@ struct ResolveParams {
     bool msaa = false;
     glm::vec3 background{0.0f};
     bool alpha = false;  // RGBA with alpha = covered fraction; RGB is then the mean of the covered samples only
-    int threads = 0;
 };
 
 // True when the pixel's n samples all hold the same value (one triangle, or all empty).
@@ -133,8 +132,9 @@ void size_image(Image& image, int width, int height, int channels);
 // The colour image. Uncovered samples take the background colour (or, with alpha, no part in the colour).
 // MSAA shades each triangle in a pixel once, at the first of its samples in pattern order (always inside the
 // triangle, so no extrapolation), weighted by how many samples it covers.
-// `image` is resized (its storage reused when it fits) and every pixel written.
-void resolve_image(const VisibilityBuffer& visibility, const Shader& shader, const ResolveParams& params, Image& image);
+// `image` is resized (its storage reused when it fits) and every pixel written, rows in parallel on `threads`
+// threads. The resolver's sample count must be the buffer's.
+void resolve_image(const VisibilityBuffer& visibility, const PixelResolver& resolver, int threads, Image& image);
 
 // Greyscale depth: per pixel the nearest covered sample's view depth, mapped linearly so that the nearest depth
 // in the image is white (255) and the farthest is 32; pixels with no coverage are black.

@@ -26,12 +26,10 @@ bool any_mesh_has_parts(const Scene& scene) {
 
 }  // namespace
 
-Shader::Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting,
-               const ShadowMaps* shadows)
-    : scene_(scene), geometry_(geometry), mode_(scene.settings.shading), lighting_(lighting) {
+Shader::Shader(const Scene& scene, const TransformedScene& geometry, const ShadowMaps* shadows)
+    : scene_(scene), geometry_(geometry), mode_(scene.settings.shading) {
     specular_model_ = mode_ == ShadingMode::phong ? SpecularModel::phong : SpecularModel::blinn;
-    lights_in_batches_ =
-        (mode_ == ShadingMode::phong || mode_ == ShadingMode::blinn_phong) && lighting_ == evaluate_lighting;
+    lights_in_batches_ = mode_ == ShadingMode::phong || mode_ == ShadingMode::blinn_phong;
     if (any_mesh_has_parts(scene)) {
         triangle_material_.resize(geometry.triangles.size());
         for (uint32_t tri = 0; tri < geometry.triangles.size(); ++tri) {
@@ -116,14 +114,14 @@ void Shader::lit_terms(const glm::vec3& position, const glm::vec3& normal, const
                        LightingTerms* out) const {
     const glm::vec3 to_eye = unit_or_zero(scene_.camera.eye - position);
     if (terms_stride_ == 1) {
-        out[0] = lighting_(position, normal, to_eye, material, scene_.lights, scene_.settings.ambient_light,
+        out[0] = evaluate_lighting(position, normal, to_eye, material, scene_.lights, scene_.settings.ambient_light,
                            SpecularModel::blinn, nullptr);
         return;
     }
-    out[0] = lighting_(position, normal, to_eye, material, unshadowed_lights_, scene_.settings.ambient_light,
+    out[0] = evaluate_lighting(position, normal, to_eye, material, unshadowed_lights_, scene_.settings.ambient_light,
                        SpecularModel::blinn, nullptr);
     for (size_t k = 0; k < shadowed_lights_.size(); ++k)
-        out[1 + k] = lighting_(position, normal, to_eye, material, {scene_.lights[shadowed_lights_[k]]},
+        out[1 + k] = evaluate_lighting(position, normal, to_eye, material, {scene_.lights[shadowed_lights_[k]]},
                                glm::vec3(0.0f), SpecularModel::blinn, nullptr);
 }
 
@@ -224,7 +222,7 @@ LightingTerms Shader::light_at(uint32_t triangle, const glm::vec3& bary, const f
             return evaluate_gooch_lighting(position, unit_normal, to_eye, material(triangle), scene_.lights,
                                            settings.gooch, visibility);
         default:
-            return lighting_(position, unit_normal, to_eye, material(triangle), scene_.lights, settings.ambient_light,
+            return evaluate_lighting(position, unit_normal, to_eye, material(triangle), scene_.lights, settings.ambient_light,
                              specular_model_, visibility);
     }
 }

@@ -26,8 +26,7 @@ class ShadowMaps;  // shadow_maps.h
 // per vertex) and scale them per sample, so their shadows are as sharp as the other modes'.
 class Shader {
 public:
-    Shader(const Scene& scene, const TransformedScene& geometry, LightingFunction lighting = evaluate_lighting,
-           const ShadowMaps* shadows = nullptr);
+    Shader(const Scene& scene, const TransformedScene& geometry, const ShadowMaps* shadows = nullptr);
 
     // Linear RGB of triangle `triangle` at barycentrics `bary` (w.r.t. its original vertices), unclamped.
     glm::vec3 shade(uint32_t triangle, const glm::vec3& bary) const;
@@ -44,7 +43,7 @@ private:
     // The texture's value at the point when the triangle's material has one (it multiplies the base colour).
     bool texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3& factor) const;
     const Material& material(uint32_t triangle) const;
-    // One point, every mode; Blinn-Phong and Phong only when lit by a lighting function other than the kernels'.
+    // One point, every mode but Blinn-Phong and Phong, which shade_many lights in batches.
     glm::vec3 shade_point(uint32_t triangle, const glm::vec3& bary) const;
     // A lit colour: base * diffuse + specular.
     static glm::vec3 lit(const glm::vec3& base, const LightingTerms& terms) {
@@ -82,9 +81,8 @@ private:
     const Scene& scene_;
     const TransformedScene& geometry_;
     ShadingMode mode_;
-    LightingFunction lighting_;
     SpecularModel specular_model_;             // Phong's lobe for phong, Blinn's for the other lit modes
-    bool lights_in_batches_ = false;           // Blinn-Phong or Phong lit by the kernels: shade_many batches them
+    bool lights_in_batches_ = false;           // Blinn-Phong or Phong: shade_many lights them in batches
     const ShadowMaps* shadows_ = nullptr;      // null when no light casts shadows
     std::vector<const Material*> triangle_material_;  // per triangle, only when a mesh has several materials
     std::vector<size_t> shadowed_lights_;      // the scene lights with shadow maps

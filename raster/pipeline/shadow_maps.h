@@ -1,5 +1,6 @@
-// Shadow maps: for each light that casts shadows, a cube of six depth images rendered from the light by raster's
-// own rasterizer, and the lookup that turns them into the light's visibility at a shaded point (README "Shadows").
+// Shadow maps as data that shading reads: for each light that casts shadows, a cube of six depth images (rendered by
+// the shadow pass, shadow_pass.h), and the lookup that turns them into the light's visibility at a shaded point
+// (docs/shadows.md).
 #pragma once
 
 #include <cstddef>
@@ -8,8 +9,6 @@
 #include <glm/vec3.hpp>
 
 #include "raster/core/cube_faces.h"
-#include "raster/pipeline/frame.h"
-#include "raster/pipeline/stages.h"
 #include "raster/scene/scene.h"
 
 namespace raster {
@@ -17,35 +16,20 @@ namespace raster {
 // One light's cube map.
 struct ShadowCube {
     glm::vec3 light{0.0f};
-    float near = 0.0f, far = 0.0f;  // the faces' clip planes (shadow_clip_planes)
+    float near = 0.0f, far = 0.0f;  // the faces' clip planes (shadow_pass.h's shadow_clip_planes)
     // kCubeFaces faces of resolution^2 texels, face by face (cube_faces.h order), each row by row from the top: the
     // view depth of the nearest opaque surface at the texel's centre, +inf where there is none.
     std::vector<float> depth;
 };
 
-// The faces' near and far planes for a light: far is twice the largest distance (max norm) from the light to a
-// vertex of the scene, near is far / 2^16 (and at least 2^-100); a light on every vertex gets far = 1. Surfaces
-// nearer the light than `near` cast no shadow from it.
-struct ShadowClipPlanes {
-    float near = 0.0f, far = 0.0f;
-};
-ShadowClipPlanes shadow_clip_planes(const std::vector<glm::vec3>& world_positions, const glm::vec3& light);
-
-// How the maps are rendered: by the stages and the renderer the frame itself uses.
-struct ShadowRenderOptions {
-    RasterPath path = RasterPath::tiled;
-    bool allow_simd = true;
-    int threads = 0;
-};
-
 class ShadowMaps {
 public:
     ShadowMaps() = default;  // no light casts shadows
-    // Renders a cube for every light of `scene` that casts shadows, from every scene triangle (both faces; snapped
-    // at the default sub-pixel precision, one sample at each texel centre, full clipping, reversed-Z, fixed-point
-    // edges), with `world_positions` the vertex stage's world positions of the scene's vertices.
-    ShadowMaps(const Scene& scene, const std::vector<glm::vec3>& world_positions, const PipelineStages& stages,
-               const ShadowRenderOptions& options);
+    // No cube yet, for a scene of `lights` lights; add_cube gives each light that casts shadows its own.
+    ShadowMaps(const ShadowSettings& settings, size_t lights) : settings_(settings), cube_of_light_(lights, -1) {}
+    // A new, empty cube for scene light `light` (which has none yet), for the shadow pass to fill; the reference
+    // holds until the next add_cube.
+    ShadowCube& add_cube(size_t light);
 
     bool empty() const { return cubes_.empty(); }
     // Whether scene light `light` has a map.
@@ -62,7 +46,7 @@ private:
     std::vector<ShadowCube> cubes_;
 };
 
-// The bias of README "Shadows" for a point at depth `depth` on the face, at face coordinates (s, t), on a surface
+// The bias of docs/shadows.md for a point at depth `depth` on the face, at face coordinates (s, t), on a surface
 // whose plane satisfies normal . (x - light) = plane (plane = normal . (point - light)): the constant part plus
 // slope_bias times how far the plane comes towards the light over the square of half-side reach = pcf / 2 texels
 // around (s, t), that part at most `depth`.

@@ -238,36 +238,6 @@ private:
 
 }  // namespace
 
-std::vector<uint8_t> transparent_triangles(const Scene& scene) {
-    if (!has_transparency(scene)) return {};
-    std::vector<uint8_t> out;
-    for (const SceneMesh& mesh : scene.meshes)
-        for (uint32_t t = 0; t < mesh.data.triangles.size(); ++t) out.push_back(material_of(mesh, t).opacity < 1.0f);
-    return out;
-}
-
-namespace {
-
-// Appends the transparent setups of `setups` to `out` and keeps the rest in place, both in draw order.
-void move_transparent_setups(const std::vector<uint8_t>& transparent, std::vector<TriangleSetup>& setups,
-                             std::vector<TriangleSetup>& out) {
-    size_t kept = 0;
-    for (const TriangleSetup& t : setups) {
-        if (transparent[t.triangle_id]) out.push_back(t);
-        else setups[kept++] = t;
-    }
-    setups.resize(kept);
-}
-
-}  // namespace
-
-void split_transparent_setups(const std::vector<uint8_t>& transparent,
-                              std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out) {
-    out.clear();
-    if (transparent.empty()) return;
-    for (std::vector<TriangleSetup>& chunk : chunks) move_transparent_setups(transparent, chunk, out);
-}
-
 size_t composite_transparency(const TransparencyInputs& in, Image& image) {
     if (in.setups->empty()) return 0;
     const int height = in.opaque->height;

@@ -18,15 +18,6 @@
 
 namespace raster {
 
-// Per scene triangle (in id order), 1 where its material's opacity is below 1; empty when no material is
-// transparent, so an opaque scene does no per-triangle work for transparency.
-std::vector<uint8_t> transparent_triangles(const Scene& scene);
-
-// Moves the setups of transparent triangles out of the front end's chunks into `out` (cleared first): each chunk
-// keeps its opaque setups, `out` gets every chunk's transparent ones, both in draw order.
-void split_transparent_setups(const std::vector<uint8_t>& transparent,
-                              std::vector<std::vector<TriangleSetup>>& chunks, std::vector<TriangleSetup>& out);
-
 struct TransparencyInputs {
     const std::vector<TriangleSetup>* setups = nullptr;  // the transparent ones, in draw order
     const FrameParams* frame = nullptr;

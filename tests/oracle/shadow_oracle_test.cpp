@@ -16,7 +16,7 @@
 #include "oracle/reference/shadow_oracle.h"
 #include "oracle/reference/shadow_precision.h"
 #include "raster/core/cube_faces.h"
-#include "raster/pipeline/shadow_maps.h"
+#include "raster/pipeline/shadow_pass.h"
 #include "raster/pipeline/vertex_stage.h"
 #include "tests/support/quad_meshes.h"
 
@@ -137,7 +137,7 @@ Sweep sweep(const Scene& scene) {
     const OracleScene geometry = oracle_scene(scene);
     const ShadowOracle oracle(scene, geometry, 2);
     const TransformedScene transformed = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
-    const ShadowMaps maps(scene, transformed.world_position, PipelineStages{}, {RasterPath::tiled, true, 2});
+    const ShadowMaps maps = render_shadow_maps(scene, transformed.world_position, raster_backend(RasterPath::tiled), 2);
     Sweep out;
     for (double x = 0.0; x <= 1.5; x += 1.0 / 512) {
         const auto [id, bary] = floor_point(x, 0.1);

@@ -1,11 +1,12 @@
 // The front end's set-up gives, triangle by triangle, what the clip and setup stages give run one triangle at a
-// time: with its vertices projected once for the unclipped triangles, in every precision mode, and with the stages
-// replaced.
+// time: with its vertices projected once for the unclipped triangles, in every precision mode; and it sets the
+// transparent triangles' setups aside.
 #include "raster/pipeline/front_end.h"
 
 #include <gtest/gtest.h>
 
 #include "raster/formats/scene_loader.h"
+#include "raster/pipeline/sample_pattern.h"
 
 namespace raster {
 namespace {
@@ -73,11 +74,10 @@ TEST(FrontEnd, setsUpEveryTriangleAsTheClipAndSetupStagesDoOneAtATime) {
     for (const PrecisionModes& modes : variants)
         for (bool cull : {false, true}) {
             const Scene scene = close_teapot(modes);
-            const PipelineStages stages;
-            const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(scene.settings.shading));
-            const FrameParams frame = frame_params_for(scene, stages.sample_offsets(1, SamplePattern::standard), 2);
-            RenderStats stats;
-            const std::vector<TriangleSetup> got = set_up_triangles(geometry, frame, stages, cull, stats);
+            const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
+            const FrameParams frame = frame_params_for(scene, sample_offsets(1, SamplePattern::standard), 2);
+            SetupCounts stats;
+            const std::vector<TriangleSetup> got = set_up_triangles(geometry, frame, cull, &stats);
             size_t clipped = 0;
             const std::vector<TriangleSetup> want = one_triangle_at_a_time(geometry, frame, cull, clipped);
             EXPECT_GT(clipped, 0u);
@@ -89,32 +89,31 @@ TEST(FrontEnd, setsUpEveryTriangleAsTheClipAndSetupStagesDoOneAtATime) {
         }
 }
 
-// Counts every call of the replaced stages below; their setups' triangles (none: each drops its triangle).
-int stage_calls = 0;
-ClippedPolygon clip_away(const glm::vec4&, const glm::vec4&, const glm::vec4&, const ClipVolume&) {
-    ++stage_calls;
-    return {};
-}
-int set_up_nothing(const ClippedPolygon&, uint32_t, const FrameParams&, std::vector<TriangleSetup>&) {
-    ++stage_calls;
-    return 0;
-}
-
-TEST(FrontEnd, aReplacedClipOrSetupStageRunsOnEveryTriangle) {
+TEST(FrontEnd, setsTheTransparentTrianglesSetupsAsideInDrawOrderAndKeepsTheRestInPlace) {
     const Scene scene = close_teapot({});
-    PipelineStages clip_replaced, setup_replaced;
-    clip_replaced.clip = clip_away;
-    setup_replaced.setup = set_up_nothing;
-    const TransformedScene geometry = clip_replaced.vertex(scene, vertex_stage_needs(scene.settings.shading));
-    const FrameParams frame = frame_params_for(scene, clip_replaced.sample_offsets(1, SamplePattern::standard), 1);
-    for (const PipelineStages& stages : {clip_replaced, setup_replaced}) {
-        RenderStats stats;
-        stage_calls = 0;
-        EXPECT_TRUE(set_up_triangles(geometry, frame, stages, false, stats).empty());
-        EXPECT_EQ(stage_calls, static_cast<int>(geometry.triangles.size()));
+    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
+    const FrameParams frame = frame_params_for(scene, sample_offsets(1, SamplePattern::standard), 2);
+    const std::vector<TriangleSetup> all = set_up_triangles(geometry, frame, false);
+    std::vector<uint8_t> transparent(geometry.triangles.size(), 0);
+    for (size_t tri = 0; tri < transparent.size(); tri += 3) transparent[tri] = 1;
+    FrontEndSetups out;
+    const SetupCounts counts = set_up_triangles_into(geometry, frame, false, transparent, out);
+    EXPECT_EQ(counts.rasterized, all.size()) << "counted before the split";
+    std::vector<TriangleSetup> opaque;
+    concatenate_setups(out.setup_chunks, 2, opaque);
+    size_t next_opaque = 0, next_transparent = 0;
+    for (size_t i = 0; i < all.size(); ++i) {
+        if (transparent[all[i].triangle_id]) {
+            ASSERT_LT(next_transparent, out.transparent_setups.size());
+            expect_same_setup(out.transparent_setups[next_transparent++], all[i], i);
+        } else {
+            ASSERT_LT(next_opaque, opaque.size());
+            expect_same_setup(opaque[next_opaque++], all[i], i);
+        }
     }
-    RenderStats stats;
-    EXPECT_GT(set_up_triangles(geometry, frame, PipelineStages{}, false, stats).size(), 1000u);
+    EXPECT_EQ(next_opaque, opaque.size());
+    EXPECT_EQ(next_transparent, out.transparent_setups.size());
+    EXPECT_GT(next_transparent, 100u);
 }
 
 }  // namespace

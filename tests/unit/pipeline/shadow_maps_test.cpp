@@ -1,7 +1,7 @@
 // Shadow maps: the cube faces' convention, the map's answer under an occluder and beside it, the receiver-plane
 // bias against a brute-force reference, no acne at the defaults, percentage-closer fractions, and both renderers
 // drawing the same maps.
-#include "raster/pipeline/shadow_maps.h"
+#include "raster/pipeline/shadow_pass.h"
 
 #include <cmath>
 #include <limits>
@@ -34,7 +34,7 @@ Scene floor_scene(const glm::vec3& light, float extent, bool occluder = true) {
 
 ShadowMaps maps_of(const Scene& scene, RasterPath path = RasterPath::tiled) {
     const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
-    return ShadowMaps(scene, geometry.world_position, PipelineStages{}, {path, true, 2});
+    return render_shadow_maps(scene, geometry.world_position, raster_backend(path), 2);
 }
 
 const glm::vec3 kUp(0.0f, 1.0f, 0.0f);

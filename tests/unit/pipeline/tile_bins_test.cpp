@@ -9,6 +9,7 @@
 
 #include "raster/pipeline/front_end.h"
 #include "raster/pipeline/render.h"
+#include "raster/pipeline/sample_pattern.h"
 #include "tests/support/quad_meshes.h"
 
 namespace raster {
@@ -16,12 +17,14 @@ namespace {
 
 TEST(TileBins, listEachTilesSetupsInDrawOrderGroupAfterGroupAndEveryVisibleOne) {
     const Scene scene = test_support::unlit_scene({test_support::grid_mesh(50, glm::vec3(0.5f)), test_support::grid_mesh(50, glm::vec3(0.5f))});
-    RenderResult result;
-    const FrontEnd front = run_front_end(scene, RenderOptions{}, PipelineStages{}, result);
-    const SetupTable table = SetupTable::of_chunks(result.workspace.setup_chunks);
+    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
+    const FrameParams frame = frame_params_for(scene, sample_offsets(1, SamplePattern::standard), 0);
+    FrontEndSetups front_end;
+    set_up_triangles_into(geometry, frame, false, {}, front_end);
+    const SetupTable table = SetupTable::of_chunks(front_end.setup_chunks);
     ASSERT_EQ(table.parts(), 3u);  // 10,000 triangles in chunks of 4096
     std::vector<BinGroup> groups;
-    const TileBins bins = bin_setups(table, front.frame, 2, groups);
+    const TileBins bins = bin_setups(table, frame, 2, groups);
     std::set<std::pair<size_t, uint32_t>> binned;  // (tile, scene triangle)
     for (size_t tile = 0; tile < bins.tiles(); ++tile) {
         const int tile_x = static_cast<int>(tile % bins.tiles_x) * kTileSize;

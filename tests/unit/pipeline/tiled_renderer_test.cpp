@@ -11,7 +11,10 @@
 #include "raster/formats/scene_loader.h"
 #include "raster/pipeline/front_end.h"
 #include "raster/pipeline/render.h"
+#include "raster/pipeline/reference_rasterizer.h"
+#include "raster/pipeline/sample_pattern.h"
 #include "raster/pipeline/setup_table.h"
+#include "raster/pipeline/tile_rasterizer.h"
 #include "raster/pipeline/simd_targets.h"
 #include "tests/support/pinned_simd_target.h"
 #include "tests/support/quad_meshes.h"
@@ -66,7 +69,7 @@ TEST(TiledRender, matchesTheReferencePathByteForByte) {
             reference_options.path = RasterPath::reference;
             const RenderResult reference = render(scene, reference_options);
             RenderResult tiled;
-            render_tiled_into(scene, options, PipelineStages{}, tiled);
+            render_into(scene, options, tiled);
             ASSERT_EQ(tiled.image.pixels, reference.image.pixels) << entry.path() << " samples " << v.samples;
             ASSERT_EQ(tiled.visibility.triangle, reference.visibility.triangle) << entry.path();
             ASSERT_EQ(tiled.visibility.view_depth, reference.visibility.view_depth) << entry.path();
@@ -75,13 +78,13 @@ TEST(TiledRender, matchesTheReferencePathByteForByte) {
             RenderOptions portable = options;
             portable.allow_simd = false;
             RenderResult scalar;
-            render_tiled_into(scene, portable, PipelineStages{}, scalar);
+            render_into(scene, portable, scalar);
             ASSERT_EQ(scalar.image.pixels, reference.image.pixels) << entry.path() << " (portable)";
             ASSERT_EQ(scalar.visibility.view_depth, reference.visibility.view_depth) << entry.path() << " (portable)";
             // Without the visibility buffer the image is still the same.
             options.keep_visibility = false;
             RenderResult lean;
-            render_tiled_into(scene, options, PipelineStages{}, lean);
+            render_into(scene, options, lean);
             ASSERT_EQ(lean.image.pixels, reference.image.pixels) << entry.path() << " (no visibility buffer)";
             // (A scene with transparency keeps it: the transparency pass reads the opaque samples.)
             EXPECT_EQ(lean.visibility.size(), has_transparency(scene) ? reference.visibility.size() : 0u);
@@ -108,12 +111,12 @@ TEST(TiledRender, everySimdTargetTheCpuRunsGivesTheScalarFallbacksBytes) {
             RenderResult expected;
             {
                 const test_support::PinnedSimdTarget fallback_only(targets.back());
-                render_tiled_into(scene, options, PipelineStages{}, expected);
+                render_into(scene, options, expected);
             }
             for (const int64_t target : targets) {
                 const test_support::PinnedSimdTarget pinned(target);
                 RenderResult result;
-                render_tiled_into(scene, options, PipelineStages{}, result);
+                render_into(scene, options, result);
                 ASSERT_EQ(result.image.pixels, expected.image.pixels)
                     << name << (msaa ? " msaa" : "") << " on " << simd_target_name(target);
                 ++compared;
@@ -170,11 +173,9 @@ TEST(TiledRender, aTransparentMeshAmongChunksGivesTheReferenceBytes) {
 // rasterize_tiled on one list of more setups than a part holds (2^16): the reference rasterizer's visibility.
 TEST(TiledRender, aListLongerThanAPartGivesTheReferenceRasterizersSamples) {
     const Scene scene = test_support::unlit_scene({test_support::grid_mesh(190, glm::vec3(0.5f))});
-    const PipelineStages stages;
-    const TransformedScene geometry = stages.vertex(scene, vertex_stage_needs(scene.settings.shading));
-    const FrameParams frame = frame_params_for(scene, stages.sample_offsets(4, SamplePattern::standard), 2);
-    RenderStats stats;
-    const std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, stages, false, stats);
+    const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
+    const FrameParams frame = frame_params_for(scene, sample_offsets(4, SamplePattern::standard), 2);
+    const std::vector<TriangleSetup> setups = set_up_triangles(geometry, frame, false);
     ASSERT_GT(setups.size(), size_t{kSetupsPerPart});
     VisibilityBuffer tiled, reference;
     rasterize_tiled(setups, frame, true, tiled);

@@ -10,8 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "raster/core/errors.h"
+#include "raster/pipeline/front_end.h"
 #include "raster/pipeline/render.h"
-#include "raster/pipeline/shadow_maps.h"
+#include "raster/pipeline/shadow_pass.h"
 #include "raster/pipeline/vertex_stage.h"
 #include "tests/support/quad_meshes.h"
 
@@ -125,7 +126,7 @@ TEST(Transparency, anOpaqueSceneSetsNothingAside) {
     const Scene scene = pane_scene({pane(2.0f, 1.0f, kGreen, 1.0f)});
     EXPECT_TRUE(transparent_triangles(scene).empty());
     const RenderResult result = draw(scene);
-    EXPECT_TRUE(result.workspace.transparent_setups.empty());
+    EXPECT_TRUE(result.workspace.front_end.transparent_setups.empty());
     EXPECT_EQ(result.stats.ms_transparency, 0.0);
 }
 
@@ -139,10 +140,10 @@ TEST(Transparency, panesCastNoShadow) {
     for (auto& p : glass.data.positions) p = glm::vec3(p.x, 2.0f, p.y);
     scene.meshes = {floor, glass};
     const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
-    const ShadowMaps maps(scene, geometry.world_position, PipelineStages{}, {RasterPath::tiled, true, 2});
+    const ShadowMaps maps = render_shadow_maps(scene, geometry.world_position, raster_backend(RasterPath::tiled), 2);
     EXPECT_EQ(maps.visibility(0, {0.1f, 0.0f, 0.2f}, {0, 1, 0}), 1.0f);
     scene.meshes[1].material.opacity = 1.0f;  // the same pane opaque does
-    const ShadowMaps opaque(scene, geometry.world_position, PipelineStages{}, {RasterPath::tiled, true, 2});
+    const ShadowMaps opaque = render_shadow_maps(scene, geometry.world_position, raster_backend(RasterPath::tiled), 2);
     EXPECT_EQ(opaque.visibility(0, {0.1f, 0.0f, 0.2f}, {0, 1, 0}), 0.0f);
 }
 

@@ -1,35 +1,36 @@
-// The rasterizer's stages as one struct of functions, so the properties can drive each stage on its own hand-made
-// input (properties/stage_driver.h) with exactly the functions render() runs.
+// The rasterizer's stages as the functions a property calls, so that each property drives one stage on its own
+// hand-made input (stage_driver.h). Always the production functions: a bug of the catalogue is planted into the
+// source itself (mutants/bugs.txt), and production never reads this struct.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "raster/pipeline/clip.h"
 #include "raster/pipeline/frame_params.h"
+#include "raster/pipeline/lighting.h"
 #include "raster/pipeline/reference_rasterizer.h"
 #include "raster/pipeline/sample_pattern.h"
 #include "raster/pipeline/setup.h"
-#include "raster/pipeline/shade.h"
 #include "raster/pipeline/vertex_stage.h"
 
-namespace raster {
+namespace raster::properties {
 
-// The stages render() runs: the real ones.
-struct PipelineStages {
+struct StageFunctions {
     TransformedScene (*vertex)(const Scene&, const VertexStageNeeds&) = run_vertex_stage;  // camera matrices
-    bool (*faces_front)(const glm::vec4&, const glm::vec4&, const glm::vec4&) = raster::faces_front;  // culling
     ClippedPolygon (*clip)(const glm::vec4&, const glm::vec4&, const glm::vec4&, const ClipVolume&) = clip_triangle;
     int (*setup)(const ClippedPolygon&, uint32_t, const FrameParams&, std::vector<TriangleSetup>&) = setup_polygon;
-    // Coverage and depth of the reference renderer only (RasterPath::reference): the tiled renderer has its own,
-    // and refuses to run with this one replaced rather than silently switching renderer.
+    // Coverage and depth of the reference rasterizer (Backend reference); the tiled ones are rasterize_tiled's.
     void (*reference_rasterize)(const std::vector<TriangleSetup>&, const FrameParams&, VisibilityBuffer&) =
         rasterize_reference;
     std::vector<glm::vec2> (*sample_offsets)(int, SamplePattern) = raster::sample_offsets;
-    LightingFunction lighting = evaluate_lighting;
+    LightingTerms (*lighting)(const glm::vec3&, const glm::vec3&, const glm::vec3&, const Material&,
+                              const std::vector<Light>&, const glm::vec3&, SpecularModel, const float*) =
+        evaluate_lighting;
 };
 
-}  // namespace raster
+}  // namespace raster::properties
