@@ -13,7 +13,7 @@
 #include "apps/command.h"
 #include "raster/core/errors.h"
 #include "raster/image/image.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 #include "raster/formats/scene_format_seed001.h"
 #include "raster/formats/scene_loader.h"
 

@@ -12,7 +12,7 @@
 #include "harness/tradeoff/tradeoff_modes.h"
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 #include "raster/formats/scene_loader.h"
 #include "raster/scene/validation.h"
 

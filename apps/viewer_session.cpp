@@ -7,7 +7,7 @@
 #include "apps/viewer_orbit.h"
 #include "raster/core/stopwatch.h"
 #include "raster/image/image.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 #include "raster/scene/validation.h"
 #include "raster/texture/mip_chains.h"
 

@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/viewer_requests.h"
-#include "raster/pipeline/frame.h"
+#include "raster/frame/frame.h"
 #include "raster/scene/scene.h"
 
 namespace raster::cli {

@@ -16,7 +16,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/vertex_stage.h"
 
 namespace raster_bench {
 namespace {

@@ -12,7 +12,7 @@
 #include "oracle/reference/scene_geometry.h"
 #include "raster/image/image.h"
 #include "raster/image/to_byte.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 
 namespace raster_bench {
 

@@ -6,7 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/bench_scenes.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 
 namespace raster_bench {
 

@@ -14,7 +14,7 @@
 #include "bench/benchmark_flags.h"
 #include "bench/scaling_plot.h"
 #include "raster/core/file_io.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 
 namespace {
 

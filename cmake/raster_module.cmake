@@ -6,8 +6,8 @@
 # root is on no include path. Instead each module gets a folder of its own in the build tree that holds a single
 # link, PATH -> the source folder, and that folder is the module's PUBLIC include directory. A target therefore
 # sees the headers of its own module and of the modules it links (PUBLIC links pass theirs on), and nothing else:
-# a pipeline file that includes "raster/formats/..." fails to compile with "No such file or directory", because
-# raster_pipeline does not link raster_formats. Relative includes ("../formats/x.h") would get around this;
+# a frame file that includes "raster/formats/..." fails to compile with "No such file or directory", because
+# raster_frame does not link raster_formats. Relative includes ("../formats/x.h") would get around this;
 # tests/layering/ checks that no source uses one, and that the compiler refuses the forbidden includes.
 function(raster_module target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "PATH" "SOURCES;PUBLIC;PRIVATE")

@@ -24,8 +24,8 @@
 #include "fuzz/reference_frame.h"
 #include "fuzz/visibility_invariants.h"
 #include "raster/core/errors.h"
-#include "raster/pipeline/render.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/frame/render.h"
+#include "raster/geometry/vertex_stage.h"
 #include "raster/scene/validation.h"
 
 namespace {

@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "properties/reference/documented_samples.h"
-#include "raster/pipeline/clip.h"
+#include "raster/geometry/clip.h"
 
 namespace raster::fuzz {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "properties/reference/coverage_reference.h"
 #include "raster/core/conventions.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/vertex_stage.h"
 #include "raster/scene/scene.h"
 
 namespace raster::fuzz {

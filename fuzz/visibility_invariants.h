@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "fuzz/reference_frame.h"
-#include "raster/pipeline/visibility_buffer.h"
+#include "raster/rasterize/visibility_buffer.h"
 #include "raster/scene/scene.h"
 
 namespace raster::fuzz {

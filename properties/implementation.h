@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "raster/pipeline/frame.h"
+#include "raster/frame/frame.h"
 #include "properties/stage_functions.h"
 #include "properties/building_blocks.h"
 

@@ -18,7 +18,7 @@
 #include "properties/printing.h"
 #include "properties/property_registry.h"
 #include "raster/core/transform.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/vertex_stage.h"
 #include "raster/scene/scene.h"
 
 namespace raster::properties {

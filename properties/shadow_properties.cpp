@@ -16,8 +16,8 @@
 #include "properties/printing.h"
 #include "properties/property_registry.h"
 #include "properties/stage_driver.h"
-#include "raster/pipeline/shadow_maps.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/shading/shadow_maps.h"
+#include "raster/geometry/vertex_stage.h"
 
 namespace raster::properties {
 

@@ -4,8 +4,8 @@
 
 #include <bit>
 
-#include "raster/pipeline/shadow_pass.h"
-#include "raster/pipeline/tile_rasterizer.h"
+#include "raster/frame/shadow_pass.h"
+#include "raster/rasterize/tile_rasterizer.h"
 
 #include "properties/reference/documented_samples.h"
 #include "properties/printing.h"

@@ -12,13 +12,13 @@
 #include <glm/vec4.hpp>
 
 #include "properties/implementation.h"
-#include "raster/pipeline/clip.h"
+#include "raster/geometry/clip.h"
 #include "raster/core/conventions.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 #include "raster/scene/scene.h"
-#include "raster/pipeline/setup.h"
-#include "raster/pipeline/shadow_maps.h"
-#include "raster/pipeline/visibility_buffer.h"
+#include "raster/geometry/setup.h"
+#include "raster/shading/shadow_maps.h"
+#include "raster/rasterize/visibility_buffer.h"
 #include "properties/reference/coverage_reference.h"
 
 namespace raster::properties {

@@ -10,13 +10,13 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "raster/pipeline/clip.h"
-#include "raster/pipeline/frame_params.h"
-#include "raster/pipeline/lighting.h"
-#include "raster/pipeline/reference_rasterizer.h"
-#include "raster/pipeline/sample_pattern.h"
-#include "raster/pipeline/setup.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/clip.h"
+#include "raster/geometry/frame_params.h"
+#include "raster/shading/lighting.h"
+#include "raster/rasterize/reference_rasterizer.h"
+#include "raster/geometry/sample_pattern.h"
+#include "raster/geometry/setup.h"
+#include "raster/geometry/vertex_stage.h"
 
 namespace raster::properties {
 

@@ -16,8 +16,8 @@
 #include "properties/printing.h"
 #include "properties/property_registry.h"
 #include "properties/stage_driver.h"
-#include "raster/pipeline/texture_lookup.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/shading/texture_lookup.h"
+#include "raster/geometry/vertex_stage.h"
 #include "raster/texture/texture_sampler.h"
 
 namespace raster::properties {

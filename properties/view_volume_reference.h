@@ -1,4 +1,4 @@
-// The view volume in double, independently of raster/pipeline/clip.cpp: which samples a clip-space triangle covers inside
+// The view volume in double, independently of raster/geometry/clip.cpp: which samples a clip-space triangle covers inside
 // the volume, found without clipping (2D homogeneous barycentrics, Olano & Greer 1997), how far each sample is from
 // where that answer changes, and the scale of the numbers a float clipper works with.
 #pragma once

@@ -13,7 +13,7 @@
 #include "oracle/compare/sample_classifier.h"
 #include "oracle/reference/ray_caster.h"
 #include "raster/image/image.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 #include "raster/scene/scene.h"
 
 namespace raster::harness {

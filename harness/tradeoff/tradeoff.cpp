@@ -21,10 +21,10 @@
 #include "raster/texture/mip_chains.h"
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
-#include "raster/pipeline/front_end.h"
-#include "raster/pipeline/per_sample.h"
-#include "raster/pipeline/render.h"
-#include "raster/pipeline/sample_pattern.h"
+#include "raster/geometry/front_end.h"
+#include "raster/rasterize/per_sample.h"
+#include "raster/frame/render.h"
+#include "raster/geometry/sample_pattern.h"
 #include "raster/scene/validation.h"
 
 namespace raster::harness {

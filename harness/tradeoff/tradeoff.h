@@ -15,7 +15,7 @@
 #include "harness/tradeoff/tradeoff_modes.h"
 #include "oracle/reference/ray_caster.h"
 #include "raster/image/image.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/vertex_stage.h"
 #include "raster/scene/scene.h"
 
 namespace raster::harness {

@@ -72,7 +72,7 @@ double plane_noise(const glm::dvec3& edge1, const glm::dvec3& edge2, double vert
 // --- 3. Clipping ---------------------------------------------------------------------------------------------
 // raster's clipper makes each new vertex as a + t (b - a) with t = d_a / (d_a - d_b). In float that is the two
 // plane distances (2 roundings), their difference (1), the division (1), b - a (1), the product (1), the sum (1),
-// and the pin of w to near (1): gamma_8 relative to |a| + |b|. (raster/pipeline/clip.cpp computes it in double and
+// and the pin of w to near (1): gamma_8 relative to |a| + |b|. (raster/geometry/clip.cpp computes it in double and
 // rounds once to float before the pin: 2 roundings, well inside the float bound kept here.)
 // The cut point also moves with its endpoints. With a' = a + da, b' = b + db and distances moved by
 // dd_a = n.da, dd_b = n.db (n the plane's coefficients, |dd| <= eps = |n|.e for an endpoint error e):

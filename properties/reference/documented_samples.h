@@ -1,5 +1,5 @@
 // The sample positions as ../shared/DESIGN.md, the README and Vulkan's primsrast.adoc document them, independently
-// of raster/pipeline/sample_pattern.cpp (the oracle's transcription, which shares nothing with raster either), in
+// of raster/geometry/sample_pattern.cpp (the oracle's transcription, which shares nothing with raster either), in
 // pixels and on the fixed-point grid.
 #pragma once
 

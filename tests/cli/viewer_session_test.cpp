@@ -7,7 +7,7 @@
 
 #include "raster/formats/scene_loader.h"
 #include "raster/image/image.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 
 namespace raster::cli {
 namespace {

@@ -17,7 +17,7 @@
 #include "oracle/reference/sample_positions.h"
 #include "oracle/reference/scene_geometry.h"
 #include "oracle/reference/shading_precision.h"
-#include "raster/pipeline/render.h"
+#include "raster/frame/render.h"
 #include "tests/support/quad_meshes.h"
 
 namespace raster::oracle {

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "raster/pipeline/setup.h"
+#include "raster/geometry/setup.h"
 
 namespace raster::oracle {
 namespace {
@@ -154,7 +154,7 @@ TEST(Precision, facingIsUncertainExactlyWhileTheDeterminantIsWithinTheBound) {
 
 TEST(Precision, aVertexErrorWithinTheBoundFlipsRastersFacingDecision) {
     // Not a loose bound for nothing: moving the rows by less than their error turns a front face into a back face in
-    // raster's own decision (raster/pipeline/setup.h faces_front), so the comparator has to allow it.
+    // raster's own decision (raster/geometry/setup.h faces_front), so the comparator has to allow it.
     const double e = 1e-6;
     const FacingRows exact(1.0 - 1e-6, e);  // det = 1e-6 > 0: front-facing
     ASSERT_TRUE(faces_front(glm::vec4(exact.clip[0]), glm::vec4(exact.clip[1]), glm::vec4(exact.clip[2])));

@@ -17,8 +17,8 @@
 #include "oracle/reference/scene_geometry.h"
 #include "raster/core/conventions.h"
 #include "raster/formats/scene_loader.h"
-#include "raster/pipeline/render.h"
-#include "raster/pipeline/sample_pattern.h"
+#include "raster/frame/render.h"
+#include "raster/geometry/sample_pattern.h"
 #include "raster/scene/camera_matrices.h"
 #include "tests/support/oracle_test_scenes.h"
 

@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "oracle/reference/precision.h"
-#include "raster/pipeline/camera_rays.h"
-#include "raster/pipeline/render.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/camera_rays.h"
+#include "raster/frame/render.h"
+#include "raster/geometry/vertex_stage.h"
 #include "raster/formats/scene_loader.h"
 #include "tests/support/oracle_test_scenes.h"
 

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "oracle/reference/precision.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/geometry/vertex_stage.h"
 #include "tests/support/oracle_test_scenes.h"
 
 namespace raster::oracle {

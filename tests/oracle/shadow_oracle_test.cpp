@@ -16,8 +16,8 @@
 #include "oracle/reference/shadow_oracle.h"
 #include "oracle/reference/shadow_precision.h"
 #include "raster/core/cube_faces.h"
-#include "raster/pipeline/shadow_pass.h"
-#include "raster/pipeline/vertex_stage.h"
+#include "raster/frame/shadow_pass.h"
+#include "raster/geometry/vertex_stage.h"
 #include "tests/support/quad_meshes.h"
 
 namespace raster::oracle {

@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "raster/pipeline/simd_targets.h"
+#include "raster/simd/simd_targets.h"
 
 namespace raster::test_support {
 
