@@ -18,6 +18,9 @@ struct LightingTerms {
     glm::vec3 specular{0.0f};
 };
 
+// The colour of a point of base colour `base` under `terms`.
+inline glm::vec3 lit(const glm::vec3& base, const LightingTerms& terms) { return base * terms.diffuse + terms.specular; }
+
 // What one point light gives a surface point: the unit direction to it, n.l, and its radiance (colour times
 // intensity, over r^2 with attenuation).
 struct LightArrival {
