@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "apps/exit_codes.h"
+
 namespace CLI {
 class App;
 }
@@ -14,13 +16,6 @@ class App;
 namespace raster::cli {
 
 struct Command;
-
-// Exit codes scripts can rely on.
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitCheckFailed = 1;  // a comparison or check ran and failed
-inline constexpr int kExitCannotServe = 1;  // `raster view`: the port could not be bound
-inline constexpr int kExitBadInput = 2;     // bad usage, unreadable or invalid input; nothing was written
-inline constexpr int kExitIoError = 3;      // the input was fine but an output could not be written
 
 // Registers one subcommand beyond raster_cli's own (apps/command.h): the `raster` program adds `view`, which lives
 // in its own module so that nothing else linking raster_cli (the cli fuzz target, in-process tests) links a server.

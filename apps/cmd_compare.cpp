@@ -6,14 +6,15 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
+#include "apps/render_outputs.h"
 #include "apps/settings_flags.h"
-#include "harness/comparison/scene_comparison.h"
+#include "harness/comparison/comparison_output.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
 #include "raster/image/image.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::cli {
 namespace {
@@ -31,9 +32,12 @@ void register_compare_flags(CLI::App& app, CompareFlags& flags) {
         "compare", "Render a scene as `raster render` does and with the independent Embree oracle, and class every "
                    "sample's and every pixel's disagreement.");
     compare->footer(
-        "Every sample is classed as agree, ambiguous (edge band, depth tie, clip boundary, facing: allowed by the\n"
-        "precision model) or genuine (visibility, barycentrics, depth); every pixel whose samples all agree has its\n"
-        "colour, as raster's PNG and PPM writers write it, checked against the oracle's bounds (genuine: colour).\n"
+        "The scene is rendered once, by the same job `raster render` runs, into a temporary folder: its image as PNG\n"
+        "and as PPM, and its depth image. Every sample is classed as agree, ambiguous (edge band, depth tie, clip\n"
+        "boundary, facing: allowed by the precision model) or genuine (visibility, barycentrics, depth); every pixel\n"
+        "whose samples all agree has its colour, as read back from each file, checked against the oracle's bounds\n"
+        "(genuine: colour), and every pixel of the depth files against the depth image's definition over raster's\n"
+        "samples (genuine: depth image). A seed 000 shading-depth config writes its depth image only.\n"
         "The settings flags are render's. Exit code 0 when genuine_total is 0, 1 when not, 2 on bad input, 3 when an\n"
         "output cannot be written or Embree fails.\n"
         "Example: raster compare corpus/scenes/teapot.yaml --samples 16 --json teapot.json --diff teapot-diff.png");
@@ -48,9 +52,14 @@ void register_compare_flags(CLI::App& app, CompareFlags& flags) {
 }
 
 int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err) {
-    Scene scene;
+    SceneFile file;
+    Scene& scene = file.scene;
     try {
-        scene = load_scene(flags.scene);
+        file = load_scene_file(flags.scene);
+        if (file.request.self_check)
+            throw InputError(flags.scene, 0, 0,
+                             "this file asks for a check of its own, not an image: `raster render` writes nothing to "
+                             "compare (run it with `raster render`)");
         try {
             apply_settings_flags(flags.settings, scene);
         } catch (const InputError& error) {  // a setting the flags made invalid: name the scene it is for
@@ -66,9 +75,16 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
     options.mode = flags.fast_oracle ? oracle::OracleMode::fast : oracle::OracleMode::robust;
     options.threads = flags.settings.threads;
     options.alpha = flags.settings.alpha;
+    // What `raster render` writes for this file: its colour image unless the file asks for the depth image; and the
+    // depth image, which the file or --depth-out can ask for.
+    options.colour_output = render_job_for(flags.scene, file.request, "", "").outputs.front().kind == OutputKind::colour;
+    options.depth_output = true;
     std::unique_ptr<harness::Comparison> comparison;
     try {
         comparison = std::make_unique<harness::Comparison>(harness::compare_scene(scene, options));
+    } catch (const OutputError& error) {
+        err << "raster compare: error: " << error.what() << "\n";
+        return kExitIoError;
     } catch (const oracle::OracleError& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;

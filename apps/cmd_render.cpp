@@ -7,16 +7,15 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
+#include "apps/render_outputs.h"
 #include "apps/settings_flags.h"
 #include "harness/tradeoff/tradeoff.h"
 #include "raster/core/errors.h"
 #include "raster/image/image.h"
-#include "raster/frame/render.h"
-#include "raster/resolve/depth_image.h"
-#include "raster/formats/scene_format_seed000.h"
+#include "raster/frame/render_job.h"
 #include "raster/core/parallel.h"
 #include "raster/core/stopwatch.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::cli {
 namespace {
@@ -81,48 +80,33 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
 }
 
 int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
-    Scene scene;
-    std::optional<Seed000Config> seed000;  // a seed 000 config's task decides what is written
+    SceneFile file;
     const auto load_start = Clock::now();
     try {
-        SceneFormat format = SceneFormat::raster;
         start_threads(flags.settings.threads);  // the workers start while the scene loads
-        scene = load_scene(flags.scene, &format);
-        if (format == SceneFormat::seed000) seed000 = load_seed000_config(flags.scene);
-        apply_settings_flags(flags.settings, scene);
+        file = load_scene_file(flags.scene);
+        apply_settings_flags(flags.settings, file.scene);
     } catch (const InputError& error) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitBadInput;
     }
+    const Scene& scene = file.scene;
     const double ms_load = milliseconds_since(load_start);
-    if (seed000 && seed000->task == Seed000Task::transform_test) {
-        const Seed000TestResult test = run_seed000_transform_test(*seed000);
-        out << format_seed000_test_result(test);
-        return test.match ? kExitOk : kExitCheckFailed;
-    }
-    std::filesystem::path output = flags.output;
-    if (output.empty() && seed000) output = seed000->output;
-    if (output.empty()) output = std::filesystem::path(flags.scene).stem().string() + ".png";
-    const bool depth_task = seed000 && seed000->task == Seed000Task::shading_depth;
-    RenderOptions options;
-    options.threads = flags.settings.threads;
-    options.alpha = flags.settings.alpha;
-    options.keep_visibility = depth_task || !flags.depth_out.empty();  // the full-frame sample planes, only if read
-    RenderResult result;
-    std::vector<double> frame_ms;
-    for (int frame = 0; frame < flags.repeat; ++frame) {
-        render_into(scene, options, result);
-        frame_ms.push_back(result.stats.ms_total);
-    }
-    const auto write_start = Clock::now();
+    if (file.request.self_check) return file.request.self_check(out) ? kExitOk : kExitCheckFailed;
+    RenderJob job = render_job_for(flags.scene, file.request, flags.output, flags.depth_out);
+    job.options.threads = flags.settings.threads;
+    job.options.alpha = flags.settings.alpha;
+    job.repeat = flags.repeat;
+    RenderedFrame rendered;
     try {
-        write_image(output, depth_task ? depth_image(result.visibility) : result.image, options.threads);
-        if (!flags.depth_out.empty()) write_image(flags.depth_out, depth_image(result.visibility), options.threads);
-    } catch (const std::exception& error) {
+        run_render_job(scene, job, RasterRenderer{}, rendered);
+    } catch (const OutputError& error) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitIoError;
     }
-    const double ms_write = milliseconds_since(write_start);
+    const RenderResult& result = rendered.result;
+    const std::vector<double>& frame_ms = rendered.frame_ms;
+    const double ms_write = rendered.ms_write;
     if (flags.stats) {
         nlohmann::json stats = stats_json(scene, result.stats);
         stats["ms_load"] = ms_load;    // reading and checking the scene and its files

@@ -10,14 +10,14 @@
 
 #include "apps/command.h"
 #include "apps/progress_bar.h"
-#include "harness/comparison/scene_comparison.h"
+#include "harness/comparison/comparison_output.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "oracle/report/report.h"
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
 #include "raster/image/image.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "raster/scene/validation.h"
 
 namespace raster::cli {
@@ -181,7 +181,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
                           "%s: genuine %llu, ambiguous %llu, colour genuine %llu, raster %.0f ms, oracle %.0f ms\n",
                           row.name.c_str(), static_cast<unsigned long long>(comparison->genuine_total()),
                           static_cast<unsigned long long>(comparison->visibility.counts.ambiguous_total()),
-                          static_cast<unsigned long long>(comparison->colour_genuine_pixels), comparison->raster_ms,
+                          static_cast<unsigned long long>(comparison->colour.genuine_pixels), comparison->raster_ms,
                           comparison->oracle_ms);
             progress.finish();
             out << line << std::flush;

@@ -13,7 +13,7 @@
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
 #include "raster/frame/render.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "raster/scene/validation.h"
 
 namespace raster::cli {

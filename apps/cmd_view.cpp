@@ -14,7 +14,7 @@
 #include "apps/viewer_server.h"
 #include "apps/viewer_session.h"
 #include "raster/core/errors.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::cli {
 namespace {

@@ -6,11 +6,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include "apps/cli.h"
+#include "apps/exit_codes.h"
 
 namespace raster::cli {
 
-// What a subcommand does once its flags are parsed; returns the process exit code (see cli.h).
+// What a subcommand does once its flags are parsed; returns the process exit code (exit_codes.h).
 using CommandAction = std::function<int(std::ostream& out, std::ostream& err)>;
 
 struct Command {

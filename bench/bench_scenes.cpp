@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster_bench {
 

@@ -5,7 +5,7 @@
 #include <exception>
 
 #include "bench/llvmpipe_peer.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "raster/image/image.h"
 
 int main(int argc, char** argv) {

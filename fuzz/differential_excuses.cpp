@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "fuzz/differential_scene.h"
-#include "harness/comparison/scene_comparison.h"
+#include "harness/comparison/comparison_output.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "fuzz/differential_scene.h"
 #include "fuzz/fuzz_check.h"
 #include "fuzz/fuzzed_scene.h"
-#include "harness/comparison/scene_comparison.h"
+#include "harness/comparison/comparison_output.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::optional<raster::fuzz::DifferentialCase> input = raster::fuzz::differential_case(data, size);

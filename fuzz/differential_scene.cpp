@@ -148,7 +148,7 @@ uint64_t judged_genuine(const harness::Comparison& comparison, const JudgedClass
     if (judged.visibility) total += counts.count(oracle::SampleClass::visibility);
     if (judged.interpolation)
         total += counts.count(oracle::SampleClass::barycentrics) + counts.count(oracle::SampleClass::depth) +
-                 comparison.colour_genuine_pixels;
+                 comparison.colour.genuine_pixels + comparison.depth.genuine_pixels;
     return total;
 }
 

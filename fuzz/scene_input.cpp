@@ -6,7 +6,7 @@
 
 #include "fuzz/sandbox.h"
 #include "raster/core/errors.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::fuzz {
 namespace {

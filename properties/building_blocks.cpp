@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <string>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::properties {
 namespace {

@@ -14,7 +14,7 @@
 #include "properties/printing.h"
 #include "properties/property_registry.h"
 #include "properties/stage_driver.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::properties {
 namespace {

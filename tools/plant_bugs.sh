@@ -293,7 +293,7 @@ run_compare() {
   genuine_total=$(sed -n -E 's/^  "genuine_total": ([0-9]+),?$/\1/p' "$json")
   # The "genuine" object's counts, one "class count" per line; colour also names the formats that showed it.
   local counts png ppm
-  counts=$(sed -n -E '/^  "genuine": \{/,/^  \}/s/^    "([a-z]+)": ([0-9]+),?$/\2 \1/p' "$json" | sort -rn -k1,1 -s)
+  counts=$(sed -n -E '/^  "genuine": \{/,/^  \}/s/^    "([a-z_]+)": ([0-9]+),?$/\2 \1/p' "$json" | sort -rn -k1,1 -s)
   png=$(sed -n -E 's/^    "color_png": ([0-9]+),?$/\1/p' "$json")
   ppm=$(sed -n -E 's/^    "color_ppm": ([0-9]+),?$/\1/p' "$json")
   local count class parts=()

@@ -98,13 +98,19 @@ PixelBounds pixel_bounds(const ColourInputs& in) {
 }
 
 ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, const OracleImage& oracle) {
-    if (image.width != bounds.width || image.height != bounds.height || oracle.width != bounds.width ||
-        oracle.height != bounds.height || oracle.channels != bounds.channels)
-        throw std::invalid_argument("check_colours: the image and the bounds have different sizes");
-    const int channels = std::min(bounds.channels, image.channels);
+    if (oracle.width != bounds.width || oracle.height != bounds.height || oracle.channels != bounds.channels)
+        throw std::invalid_argument("check_colours: the oracle's image and the bounds have different sizes");
     ColourCheck out;
     out.genuine_pixels.assign(static_cast<size_t>(bounds.width) * bounds.height, 0);
     out.shadow_pixels.assign(out.genuine_pixels.size(), 0);
+    if (image.width != bounds.width || image.height != bounds.height || image.channels < 1) {
+        // A file of another size (or none that decodes) is wrong at every pixel.
+        std::fill(out.genuine_pixels.begin(), out.genuine_pixels.end(), 1);
+        out.judged = out.genuine = out.genuine_pixels.size();
+        out.max_difference = 255;
+        return out;
+    }
+    const int channels = std::min(bounds.channels, image.channels);
     for (int y = 0; y < bounds.height; ++y)
         for (int x = 0; x < bounds.width; ++x) {
             const size_t pixel = static_cast<size_t>(y) * bounds.width + x;

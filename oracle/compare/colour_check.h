@@ -74,8 +74,9 @@ struct ColourCheck {
     std::vector<ColourDisagreement> first;      // the first kListedColourDisagreements, row by row
 };
 
-// Checks `image` (the same size; a PPM has no alpha, so only the channels both have are compared); `oracle` is
-// the oracle's own image, for the differences and the disagreements' listing.
+// Checks `image` (a PPM has no alpha, so only the channels both have are compared; an image of another size than
+// the bounds is genuine at every pixel); `oracle` is the oracle's own image, of the bounds' size, for the
+// differences and the disagreements' listing.
 ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, const OracleImage& oracle);
 
 }  // namespace raster::oracle

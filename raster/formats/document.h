@@ -1,6 +1,7 @@
 // Scene documents: the tree one parse of a YAML or JSON file gives, every node located at its line and column.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <string>
@@ -14,6 +15,9 @@ class DocumentBuilder;
 // Nesting deeper than this many flow collections ([ and {), or this many block collections, is refused while
 // parsing: the parsers recurse once per level.
 inline constexpr int kMaxDocumentNesting = 64;
+
+// Largest scene file (a document) read, in bytes.
+inline constexpr uint64_t kMaxSceneFileBytes = uint64_t{256} << 20;
 
 // One node of a parsed document. A map keeps its entries in file order, a repeated key included; an alias is the
 // very node it names. Nodes live in their Document and are only handled by reference.

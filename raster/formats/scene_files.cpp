@@ -6,7 +6,7 @@
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
 #include "raster/formats/obj_materials.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/formats/mesh_file.h"
 #include "raster/texture/mip_chains.h"
 #include "raster/texture/texture.h"
 

@@ -1,4 +1,5 @@
-// The scene formats' readers, each filling a Scene from a parsed document (internal to the loader).
+// The raster scene format's reader, and what every scene format's reader shares (the scene's file loaders, the
+// camera's nodes to blame, transform chains): the course documents' readers (raster/compat/) use them too.
 #pragma once
 
 #include <filesystem>
@@ -11,7 +12,6 @@
 
 #include "raster/scene/scene.h"
 #include "raster/scene/validation.h"
-#include "raster/formats/scene_format_seed000.h"
 #include "raster/formats/document_reader.h"
 
 namespace raster {
@@ -33,13 +33,6 @@ struct SceneFileLoaders {
 // The raster format's `render` section into `settings`.
 void read_raster_render(const Node& node, const DocumentReader& reader, RenderSettings& settings);
 void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
-void read_seed003_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
-// Seed 000 configs: the scene the config's task draws (see scene_format_seed000.h); read_seed000_config reads the
-// rest (task, output, transform-test values).
-void read_seed000_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
-Seed000Config read_seed000_config(const Node& root, const DocumentReader& reader);
-// Seed 001 (balboa) JSON scenes: camera with resolution / transform / s / z_near, background, objects.
-void read_seed001_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
 
 // A camera's nodes in a document (undefined where the file leaves the value to its default), and the node to blame
 // for a camera problem: the value's own node, else the node it is relative to (target and up: the eye; far: near),

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "raster/image/image.h"
 #include "raster/frame/render.h"
 

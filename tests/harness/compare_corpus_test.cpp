@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "harness/comparison/scene_comparison.h"
+#include "harness/comparison/comparison_output.h"
 #include "oracle/compare/expectations.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::oracle {
 namespace {
@@ -67,17 +67,17 @@ TEST_P(CorpusAgainstOracle, hasNoGenuineDisagreement) {
     for (uint64_t n : counts.by_class) total += n;
     EXPECT_EQ(total, comparison.raster.visibility.size());
     EXPECT_LE(counts.ambiguous_total(), total / 1000) << harness::comparison_summary(comparison);
-    EXPECT_GT(comparison.png.judged, uint64_t(comparison.width) * comparison.height * 99 / 100);
+    EXPECT_GT(comparison.colour.png.judged, uint64_t(comparison.width) * comparison.height * 99 / 100);
     // The shadow model's two views of the scene (the ray, the exact footprint) never disagree, and it leaves at most
     // 2% of the pixels open.
-    EXPECT_EQ(comparison.shadow_inconsistent_pixels, 0u) << harness::comparison_summary(comparison);
-    EXPECT_LE(comparison.shadow_edge_pixels + comparison.shadow_depth_pixels,
+    EXPECT_EQ(comparison.shadows.inconsistent_pixels, 0u) << harness::comparison_summary(comparison);
+    EXPECT_LE(comparison.shadows.edge_pixels + comparison.shadows.depth_pixels,
               uint64_t(comparison.width) * comparison.height / 50)
         << harness::comparison_summary(comparison);
     // The transparent layers leave at most 1% of the pixels open: only along a layer's edges (a sample within the
     // snap radius of one) and where a layer meets a surface (a depth within the bounds).
-    EXPECT_LE(comparison.transparency_edge_pixels + comparison.transparency_depth_pixels +
-                  comparison.transparency_order_pixels,
+    EXPECT_LE(comparison.transparency.edge_pixels + comparison.transparency.depth_pixels +
+                  comparison.transparency.order_pixels,
               uint64_t(comparison.width) * comparison.height / 100)
         << harness::comparison_summary(comparison);
 }

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::harness {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "harness/tradeoff/tradeoff_modes.h"
 #include "oracle/report/report.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "tests/support/cli_run.h"
 #include "tests/support/tradeoff_test_support.h"
 

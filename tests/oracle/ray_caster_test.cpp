@@ -16,7 +16,7 @@
 #include "oracle/reference/sample_positions.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/core/conventions.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "raster/frame/render.h"
 #include "raster/geometry/sample_pattern.h"
 #include "raster/scene/camera_matrices.h"

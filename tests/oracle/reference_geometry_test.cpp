@@ -10,7 +10,7 @@
 #include "raster/geometry/camera_rays.h"
 #include "raster/frame/render.h"
 #include "raster/geometry/vertex_stage.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "tests/support/oracle_test_scenes.h"
 
 namespace raster::oracle {

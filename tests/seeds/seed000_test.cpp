@@ -1,7 +1,7 @@
 // Seed 000 (YAML tasks): the document's examples run unchanged, and each task does what the document defines:
 // eq. (1) with a lower-left origin, per-object transforms, the transform-test's depth convention, the depth image
 // and Blinn-Phong with 1/r^2 attenuation. Expectations are computed here from the document's formulas.
-#include "raster/formats/scene_format_seed000.h"
+#include "raster/compat/scene_format_seed000.h"
 
 #include <cmath>
 #include <string>
@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "tests/support/seed_test_support.h"
 
 namespace raster {

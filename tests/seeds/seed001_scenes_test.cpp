@@ -1,5 +1,5 @@
 // Seed 001's section 4 JSON scenes: read as the format says, and rendered as a ray cast of the document's camera.
-#include "raster/formats/scene_format_seed001.h"
+#include "raster/compat/scene_format_seed001.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "raster/core/errors.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "tests/support/seed001_test_support.h"
 #include "tests/support/seed_test_support.h"
 

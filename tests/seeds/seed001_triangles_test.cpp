@@ -1,5 +1,5 @@
 // Seed 001 part 2.1: the document's four triangle command lines cover their projected area on the grey background.
-#include "raster/formats/scene_format_seed001.h"
+#include "raster/compat/scene_format_seed001.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "tests/support/seed_test_support.h"
 
 namespace raster {

@@ -11,7 +11,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "raster/core/transform.h"
 #include "raster/geometry/vertex_stage.h"
 

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 #include "raster/geometry/front_end.h"
 #include "raster/frame/render.h"
 #include "raster/rasterize/reference_rasterizer.h"

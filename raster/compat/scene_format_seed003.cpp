@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "raster/scene/validation.h"
-#include "raster/formats/scene_formats.h"
+#include "raster/compat/seed_scene_readers.h"
 
 namespace raster {
 

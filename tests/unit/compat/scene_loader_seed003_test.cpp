@@ -8,7 +8,7 @@
 #include "tests/support/temp_dir.h"
 
 #include "raster/core/errors.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace raster::scene_loader_tests {
 

@@ -1,18 +1,16 @@
-// Loading scenes: reads the file, tells the format apart by content, loads each mesh file once, validates.
-#include "raster/formats/scene_loader.h"
+// Loading scenes: reads the file, tells the format apart by content, loads each mesh file once, validates, and
+// says what the file asks for besides its scene.
+#include "raster/compat/scene_loader.h"
 
-#include <algorithm>
-#include <map>
-#include <memory>
+#include <utility>
 
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
-#include "raster/formats/mesh_obj.h"
-#include "raster/formats/mesh_ply.h"
-#include "raster/scene/validation.h"
-#include "raster/formats/scene_formats.h"
+#include "raster/compat/seed_scene_readers.h"
+#include "raster/formats/document.h"
 #include "raster/formats/document_reader.h"
 #include "raster/formats/scene_files.h"
+#include "raster/scene/validation.h"
 
 namespace raster {
 
@@ -36,17 +34,25 @@ SceneFormat detect_format(const Node& root, const DocumentReader& reader) {
     return SceneFormat::raster;
 }
 
-}  // namespace
-
-MeshData load_mesh_file(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (extension == ".obj") return load_obj(path);
-    if (extension == ".ply") return load_ply(path);
-    throw InputError(path.string(), 0, 0, "unknown mesh format '" + extension + "' (expected .obj or .ply)");
+// The request of a seed 000 config: its output, and its task's image or self-check.
+FileRequest seed000_request(const Seed000Config& config) {
+    FileRequest request;
+    if (config.task == Seed000Task::transform_test) {
+        request.self_check = [config](std::ostream& out) {
+            const Seed000TestResult test = run_seed000_transform_test(config);
+            out << format_seed000_test_result(test);
+            return test.match;
+        };
+        return request;
+    }
+    request.output = config.output;
+    request.depth_image = config.task == Seed000Task::shading_depth;
+    return request;
 }
 
-Scene parse_scene(std::string_view text, const std::filesystem::path& path, SceneFormat* format) {
+}  // namespace
+
+SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path) {
     const std::string name = path.string();
     const Document document = parse_document(text, name);
     const Node& root = document.root();
@@ -56,19 +62,32 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& path, Scen
 
     SceneFiles files(path, reader);
     const SceneFileLoaders loaders = files.loaders();
-    Scene scene;
+    SceneFile out;
+    Scene& scene = out.scene;
     scene.path = name;
-    const SceneFormat detected = detect_format(root, reader);
-    switch (detected) {
+    out.format = detect_format(root, reader);
+    switch (out.format) {
         case SceneFormat::raster: read_raster_scene(root, reader, loaders, scene); break;
         case SceneFormat::seed003: read_seed003_scene(root, reader, loaders, scene); break;
-        case SceneFormat::seed000: read_seed000_scene(root, reader, loaders.mesh, scene); break;
+        case SceneFormat::seed000:
+            read_seed000_scene(root, reader, loaders.mesh, scene);
+            out.request = seed000_request(read_seed000_config(root, reader));
+            break;
         case SceneFormat::seed001: read_seed001_scene(root, reader, loaders.mesh, scene); break;
     }
     finish_scene_textures(scene);
     validate_scene(scene);
-    if (format) *format = detected;
-    return scene;
+    return out;
+}
+
+SceneFile load_scene_file(const std::filesystem::path& path) {
+    return parse_scene_file(read_file_bytes(path, kMaxSceneFileBytes), path);
+}
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& path, SceneFormat* format) {
+    SceneFile file = parse_scene_file(text, path);
+    if (format) *format = file.format;
+    return std::move(file.scene);
 }
 
 Scene load_scene(const std::filesystem::path& path, SceneFormat* format) {

@@ -1,6 +1,6 @@
 // Seed 000 YAML configs: reads the five tasks' keys, builds the document's matrices, and turns a config into the
 // raster scene its task renders.
-#include "raster/formats/scene_format_seed000.h"
+#include "raster/compat/scene_format_seed000.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +14,6 @@
 #include "raster/core/file_io.h"
 #include "raster/scene/validation.h"
 #include "raster/scene/sample_counts.h"
-#include "raster/formats/scene_formats.h"
-#include "raster/formats/scene_loader.h"
 #include "raster/core/transform.h"
 
 namespace raster {

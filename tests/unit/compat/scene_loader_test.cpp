@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/core/errors.h"
-#include "raster/formats/scene_loader.h"
+#include "raster/compat/scene_loader.h"
 
 namespace {
 

@@ -10,6 +10,10 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "raster/formats/document_reader.h"
+#include "raster/formats/scene_formats.h"
+#include "raster/scene/scene.h"
+
 namespace raster {
 
 enum class Seed000Task { triangle, transform, transform_test, shading_depth, shading };
@@ -58,6 +62,11 @@ struct Seed000Config {
     glm::dvec3 input{0.0};                         // transform-test only
     glm::dvec4 expected{0.0};                      // transform-test only
 };
+
+// The scene the config's task draws, from its parsed document; read_seed000_config reads the rest (task, output,
+// transform-test values). Internal to the scene loader.
+void read_seed000_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+Seed000Config read_seed000_config(const Node& root, const DocumentReader& reader);
 
 // Reads and checks a config file. Throws InputError with file, line and column.
 Seed000Config load_seed000_config(const std::filesystem::path& path);

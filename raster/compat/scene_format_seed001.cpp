@@ -1,6 +1,6 @@
 // Seed 001 balboa scenes: the shared camera and settings, the single triangle of part 2.1, and the JSON scene of
 // section 4 (camera transform, background, objects inline or from PLY files, transform lists).
-#include "raster/formats/scene_format_seed001.h"
+#include "raster/compat/scene_format_seed001.h"
 
 #include <cmath>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "raster/scene/validation.h"
-#include "raster/formats/scene_formats.h"
+#include "raster/compat/seed_scene_readers.h"
 #include "raster/core/transform.h"
 
 namespace raster {

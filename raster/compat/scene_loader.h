@@ -1,0 +1,53 @@
+// Loading scenes: one entry point for every scene file raster reads, its own YAML or a course document's, told apart
+// by content; and what such a file asks of `raster render` besides its scene (a seed 000 config names its output and
+// its task), so that the renderer and the command line know scenes and outputs, not homeworks.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "raster/scene/scene.h"
+
+namespace raster {
+
+enum class SceneFormat {
+    raster,   // the project's own YAML format (docs/scene-format.md)
+    seed003,  // the seed 003 course's JSON scene (eye / lookat / fov_angle / meshes[].obj)
+    seed000,  // the seed 000 course's YAML config (task / resolution / obj / camera / transforms / lights)
+    seed001,  // the seed 001 course's balboa JSON scene (camera / background / objects)
+};
+
+// Which format a parsed document is, by its top-level keys: seed 000 with `task`; seed 001 with `camera` and
+// `objects`; seed 003 with `fov_angle` or `lookat`; else raster.
+const char* to_string(SceneFormat format);
+
+// What a scene file asks of `raster render` besides drawing its scene.
+struct FileRequest {
+    std::filesystem::path output;  // the file's own name for the image it asks for; empty: none
+    bool depth_image = false;      // that image is the depth image, not the colour image (seed 000 shading-depth)
+    // A check the file asks for instead of a render (seed 000's transform-test): prints its result and returns
+    // whether it passed. Empty when the file asks for a render.
+    std::function<bool(std::ostream& out)> self_check;
+};
+
+struct SceneFile {
+    Scene scene;
+    SceneFormat format = SceneFormat::raster;
+    FileRequest request;
+};
+
+// Loads, validates (validate_scene) and returns a scene file, parsed once. Relative mesh paths are relative to the
+// scene file. Throws InputError naming the file, line and column of the problem.
+SceneFile load_scene_file(const std::filesystem::path& path);
+// The same from text already in memory; `path` names it in messages and anchors relative mesh paths.
+SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path);
+
+// The scene alone: load_scene_file's, its format into `format` when given.
+Scene load_scene(const std::filesystem::path& path, SceneFormat* format = nullptr);
+Scene parse_scene(std::string_view text, const std::filesystem::path& path, SceneFormat* format = nullptr);
+
+}  // namespace raster
