@@ -77,7 +77,8 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
     options.alpha = flags.settings.alpha;
     // What `raster render` writes for this file: its colour image unless the file asks for the depth image; and the
     // depth image, which the file or --depth-out can ask for.
-    options.colour_output = render_job_for(flags.scene, file.request, "", "").outputs.front().kind == OutputKind::colour;
+    const RenderJob render_writes = render_job_for(flags.scene, file.request, "", "");
+    options.colour_output = render_writes.outputs.front().kind == OutputKind::colour;
     options.depth_output = true;
     std::unique_ptr<harness::Comparison> comparison;
     try {

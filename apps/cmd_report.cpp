@@ -128,20 +128,25 @@ void copy_tradeoff_files(const fs::path& from, const fs::path& report_dir) {
 }
 
 int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
-    std::vector<Scene> scenes;
+    std::vector<SceneFile> scenes;
     std::optional<nlohmann::json> tradeoff;
     try {
         tradeoff = find_tradeoff_results(flags, err);
         const std::vector<fs::path> files =
             scene_files(flags.inputs.empty() ? std::vector<std::string>{kDefaultSceneDir} : flags.inputs);
         for (const fs::path& file : files) {
-            Scene scene = load_scene(file);
+            SceneFile scene_file = load_scene_file(file);
+            if (scene_file.request.self_check)
+                throw InputError(file.string(), 0, 0,
+                                 "this file asks for a check of its own, not an image: `raster render` writes "
+                                 "nothing to compare");
+            Scene& scene = scene_file.scene;
             if (flags.samples) scene.settings.samples = *flags.samples;
             if (std::string problem = settings_problem(scene.settings); !problem.empty())
                 throw InputError(file.string(), 0, 0, problem);
             if (std::string problem = harness::comparison_problem(scene); !problem.empty())
                 throw InputError(file.string(), 0, 0, problem);
-            scenes.push_back(std::move(scene));
+            scenes.push_back(std::move(scene_file));
         }
     } catch (const InputError& error) {
         err << "raster report: error: " << error.what() << "\n";
@@ -163,7 +168,9 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     ProgressBar progress(err, scenes.size());
     try {
         for (size_t i = 0; i < scenes.size(); ++i) {
-            const Scene& scene = scenes[i];
+            const Scene& scene = scenes[i].scene;
+            // What `raster render` writes for the file: its colour image unless it asks for the depth image.
+            options.colour_output = !scenes[i].request.depth_image;
             oracle::ReportRow row;
             row.name = fs::path(scene.path).stem().string();
             progress.show(i, row.name);

@@ -17,7 +17,7 @@ HTTP API (GET only; anything else, an unknown path or a bad parameter gets a 4xx
       material). yaw in [-360, 360], pitch in [-180, 180] degrees, distance in [0.05, 20]: the eye is
       target + distance * R(up, yaw) R(side, pitch') (eye - target), with the scene's eye, target and up,
       side = (eye - target) x up, and pitch' keeping the elevation within 89 degrees; near * min(1, distance),
-      far * max(1, distance) (README "Viewer").
+      far * max(1, distance) (docs/viewer.md).
   /state   JSON: the scene, its settings and camera, the limits, frames served, the last frame.
   /log     JSON: every frame served (up to 1000), with its parameters, eye, times and PNG hash (FNV-1a 64).
 Exit codes: 0 stopped by SIGINT (Ctrl-C) or SIGTERM, 1 the port cannot be bound, 2 bad usage or scene.

@@ -16,7 +16,7 @@ double eye_elevation_degrees(const Camera& camera);
 // The largest elevation the orbit reaches: max(kMaxOrbitElevationDegrees, |eye_elevation_degrees(camera)|).
 double orbit_elevation_limit_degrees(const Camera& camera);
 
-// The scene's camera orbited (README "Viewer"). With o = eye - target, u = normalize(up), s = normalize(o x u),
+// The scene's camera orbited (docs/viewer.md). With o = eye - target, u = normalize(up), s = normalize(o x u),
 // e0 = eye_elevation_degrees(camera) and L = orbit_elevation_limit_degrees(camera):
 //   pitch' = clamp(e0 + pitch, -L, L) - e0
 //   eye'   = target + distance * R(u, yaw) R(s, pitch') o

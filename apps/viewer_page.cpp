@@ -71,7 +71,7 @@ const clampPitch = (pitch) => clamp(pitch, Math.max(-180, -scene.elevationLimit 
 
 function showStatus(text) { $('status').textContent = text; }
 
-// GET /render's parameters for the current view (README "Viewer").
+// GET /render's parameters for the current view (docs/viewer.md).
 function renderParams() {
   const params = {shading: view.shading, samples: String(view.samples), msaa: view.msaa ? '1' : '0',
                   yaw: view.yaw.toFixed(2), pitch: view.pitch.toFixed(2), distance: view.distance.toFixed(4)};

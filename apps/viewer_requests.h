@@ -10,7 +10,7 @@
 
 namespace raster::cli {
 
-// The ranges a request may ask for (README "Viewer"); beyond them a request is refused, not clamped.
+// The ranges a request may ask for (docs/viewer.md); beyond them a request is refused, not clamped.
 inline constexpr double kMaxYawDegrees = 360.0;
 inline constexpr double kMaxPitchDegrees = 180.0;
 inline constexpr double kMinDistance = 0.05;  // times the scene's own eye-target distance

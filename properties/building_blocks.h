@@ -13,7 +13,7 @@
 
 namespace raster::properties {
 
-// A mesh transform chain as a scene file lists it: `scale`, then `rotate`, then `translate` (README "Scene format").
+// A mesh transform chain as a scene file lists it: `scale`, then `rotate`, then `translate` (docs/scene-format.md).
 struct ScaleRotateTranslate {
     glm::vec3 scale{1.0f};
     float degrees = 0.0f;
@@ -29,9 +29,9 @@ std::string scene_file_with_chain(const ScaleRotateTranslate& chain, const std::
 // The model matrix the scene loader builds for that chain: parse_scene's model matrix of that file.
 glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain);
 
-// Each block is a plain function pointer; a mutant replaces one. The vertex stage of StageFunctions calls the
-// real look_at and perspective builders itself, so a mutant of one of those also replaces the vertex stage
-// with one that uses the faulty builder (vertex_faults.h has both; catalogue.cpp plugs them in together).
+// Each block is a plain function pointer to the production builder, which the matrix properties call; a bug of the
+// catalogue is planted into the builder's source (mutants/bugs.txt), so the vertex stage, which calls the same
+// builders, runs it too.
 struct BuildingBlocks {
     glm::mat4 (*look_at)(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) = look_at_matrix;
     glm::mat4 (*look_at_inverse)(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) =

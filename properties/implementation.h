@@ -31,7 +31,7 @@ const Backend& reference_backend();   // the reference rasterizer, 1 thread
 
 struct Implementation {
     std::string name;                // "real"
-    StageFunctions stages;           // the stages render() runs
+    StageFunctions stages;           // the production stage functions the properties call
     BuildingBlocks blocks;  // matrix builders and the loader's transform chain
     Backend backend = production_backend();  // what drawing properties rasterize and render with
 };

@@ -9,7 +9,7 @@
 namespace raster::properties {
 namespace {
 
-// The suites in the README's order. Static initialisation runs the sources in whatever order the linker chose, so
+// The suites in the order of docs/properties.md. Static initialisation runs the sources in whatever order the linker chose, so
 // the registry is sorted by this list (and within a suite by where each property is written) to stay the same
 // from build to build. A new suite is added here.
 const char* const kSuiteOrder[] = {

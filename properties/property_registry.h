@@ -23,7 +23,7 @@ struct Property {
 bool register_property(const char* suite, const char* name, void (*check)(const Implementation&), bool draws,
                        const char* file, int line);
 
-// The registered properties in the README's order: by suite, in the order property_registry.cpp declares the
+// The registered properties in the order of docs/properties.md: by suite, in the order property_registry.cpp declares the
 // suites, then in the order they are written. Throws std::logic_error naming a suite that order does not list.
 const std::vector<Property>& all_properties();
 

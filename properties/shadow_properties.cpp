@@ -157,7 +157,7 @@ RASTER_DRAWING_PROPERTY(Shadow, aPointNoOccluderComesNearIsLitAndOneWellInsideAn
         }
         const glm::dvec3 d = glm::dvec3(point) - light;
         const double distance = glm::length(d);
-        // An upper bound of raster's bias here (README "Shadows": the constant part and slope_bias times the floor
+        // An upper bound of raster's bias here (docs/shadows.md: the constant part and slope_bias times the floor
         // plane's drop over the filter's square, at most the depth), from the floor's normal (0, 1, 0) and the
         // face the direction falls in: the drop over face coordinates within k = pcf / N of the point's is at most
         // depth k a / (b - k a), a = |right.y| + |up.y| <= 1, b = |d.y| / depth.

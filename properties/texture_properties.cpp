@@ -64,7 +64,7 @@ Scene floor_scene(float half, float z0, float z1, float scale, const TextureBind
     return scene;
 }
 
-// Where the camera's ray through screen point (sx, sy) meets y = 0 (README "Conventions": pixel centres at +0.5,
+// Where the camera's ray through screen point (sx, sy) meets y = 0 (docs/conventions.md: pixel centres at +0.5,
 // ndc y up, the vertical field of view), in double; false when it does not meet the floor ahead.
 bool floor_point(const Camera& camera, int width, int height, double sx, double sy, glm::dvec2& xz) {
     const glm::dvec3 eye(camera.eye), forward = glm::normalize(glm::dvec3(camera.target) - eye);

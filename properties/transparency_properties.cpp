@@ -1,7 +1,8 @@
 // The transparency properties, on the production renderer: panes facing the camera at distinct depths, each of a
 // random colour and opacity (0 and 1 included), drawn in a random order over the background. The pixel every pane
-// covers is the panes composited nearest first, computed here in double from the scene's own values (README
-// "Transparency"); a pane of opacity 1 hides everything behind it; and the image does not depend on the draw order.
+// covers is the panes composited nearest first, computed here in double from the scene's own values
+// (docs/transparency.md); a pane of opacity 1 hides everything behind it; and the image does not depend on the draw
+// order.
 #include <algorithm>
 #include <cmath>
 #include <numeric>

@@ -6,7 +6,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <stdexcept>
 #include <system_error>
+
+#include <unistd.h>
 
 #include "harness/comparison/decoded_image.h"
 #include "oracle/compare/layer_check.h"
@@ -26,19 +29,32 @@ oracle::RasterPixels pixels_of(const Image& image) {
     return {image.width, image.height, image.channels, image.pixels.data()};
 }
 
+// A file's decoded pixels when it holds the channels its format and kind must (a writer that drops or adds a
+// channel is wrong at every pixel: the checks take an empty view as such).
+oracle::RasterPixels pixels_with_channels(const Image& image, int channels) {
+    if (image.channels != channels) return {};
+    return pixels_of(image);
+}
+
 oracle::RasterSamples samples_of(const VisibilityBuffer& visibility) {
     return {visibility.width,           visibility.height,      visibility.samples,
             visibility.triangle.data(), visibility.bary.data(), visibility.view_depth.data()};
 }
 
-// A fresh folder under the system's temporary folder, removed with its files when the comparison ends.
+// A fresh folder for the comparison's files, removed with them when the comparison ends: in memory (/dev/shm) where
+// the system has it, so that the writer's fsync costs nothing, else under the system's temporary folder.
 class ScratchFolder {
 public:
     ScratchFolder() {
-        std::string pattern = (std::filesystem::temp_directory_path() / "raster_compare_XXXXXX").string();
+        std::error_code error;
+        const std::filesystem::path memory = "/dev/shm";
+        const std::filesystem::path parent =
+            std::filesystem::is_directory(memory, error) && ::access(memory.c_str(), W_OK) == 0
+                ? memory
+                : std::filesystem::temp_directory_path();
+        std::string pattern = (parent / "raster_compare_XXXXXX").string();
         if (::mkdtemp(pattern.data()) == nullptr)
-            throw OutputError("cannot make a temporary folder for the comparison's files under " +
-                              std::filesystem::temp_directory_path().string());
+            throw OutputError("cannot make a temporary folder for the comparison's files under " + parent.string());
         path_ = pattern;
     }
     ~ScratchFolder() {
@@ -82,6 +98,8 @@ JudgedFiles render_raster(const Scene& scene, const ComparisonOptions& options, 
     const RasterRenderer raster_renderer;
     const Renderer& renderer = options.renderer ? *options.renderer : raster_renderer;
     out.renderer = renderer.name();
+    if (!renderer.gives_visibility())
+        throw std::invalid_argument(renderer.name() + " gives no per-sample visibility, which a comparison classes");
     RenderedFrame rendered;
     run_render_job(scene, job, renderer, rendered);
     out.raster = std::move(rendered.result);
@@ -165,8 +183,9 @@ void judge_colour_files(const JudgedFiles& files, const oracle::PixelBounds& bou
                         Comparison& out) {
     ColourVerdicts& colour = out.colour;
     colour.written = true;
-    colour.png = oracle::check_colours(bounds, pixels_of(decoded_file(files.colour_png)), run.image);
-    colour.ppm = oracle::check_colours(bounds, pixels_of(decoded_file(files.colour_ppm)), run.image);
+    const Image png = decoded_file(files.colour_png), ppm = decoded_file(files.colour_ppm);
+    colour.png = oracle::check_colours(bounds, pixels_with_channels(png, bounds.channels), run.image);  // RGB or RGBA
+    colour.ppm = oracle::check_colours(bounds, pixels_with_channels(ppm, 3), run.image);  // PPM holds no alpha
     const size_t pixels = colour.png.genuine_pixels.size();
     colour.genuine.resize(pixels);
     ShadowVerdicts& shadows = out.shadows;
@@ -213,8 +232,8 @@ void judge_depth_files(const JudgedFiles& files, Comparison& out) {
     DepthVerdicts& depth = out.depth;
     depth.written = true;
     const oracle::RasterSamples samples = samples_of(out.raster.visibility);
-    depth.png = oracle::check_depth_image(samples, pixels_of(decoded_file(files.depth_png)));
-    depth.ppm = oracle::check_depth_image(samples, pixels_of(decoded_file(files.depth_ppm)));
+    depth.png = oracle::check_depth_image(samples, pixels_with_channels(decoded_file(files.depth_png), 1));  // grey
+    depth.ppm = oracle::check_depth_image(samples, pixels_with_channels(decoded_file(files.depth_ppm), 1));
     for (size_t i = 0; i < depth.png.genuine_pixels.size(); ++i)
         depth.genuine_pixels += depth.png.genuine_pixels[i] | depth.ppm.genuine_pixels[i];
 }

@@ -99,8 +99,8 @@ uint64_t comparison_bytes(const RenderSettings& settings);
 std::string comparison_problem(const Scene& scene);
 
 // Renders and compares. The scene must be valid (scene/validation.h) and fit the comparison's memory cap
-// (comparison_problem). Throws OracleError if Embree fails, InputError from the renderer, and OutputError when the
-// temporary folder cannot be written.
+// (comparison_problem). Throws OracleError if Embree fails, InputError from the renderer, OutputError when the
+// temporary folder cannot be written, and std::invalid_argument for a renderer that gives no visibility buffer.
 Comparison compare_scene(const Scene& scene, const ComparisonOptions& options);
 
 }  // namespace raster::harness

@@ -1,5 +1,5 @@
 // The colour check: per pixel, the bytes a correct raster may write there (the oracle's own shading over each
-// sample's barycentric tolerance, resolved as the README defines it, its float error included), and raster's image,
+// sample's barycentric tolerance, resolved as docs/oracle.md defines it, its float error included), and raster's image,
 // decoded from the bytes it wrote, against them. A pixel whose samples do not all agree is not judged here: its
 // samples' own classes say why.
 #pragma once

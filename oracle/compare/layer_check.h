@@ -1,4 +1,4 @@
-// The transparent layers' check (README "Transparency"): per sample, which of the oracle's transparent hits raster
+// The transparent layers' check (docs/transparency.md): per sample, which of the oracle's transparent hits raster
 // must composite in front of the opaque surface, in which order, and where the precision model leaves that open:
 // a layer's edge within the radius of the sample (it may or may not cover it; a triangle Embree missed is found
 // from a grid of the transparent polygons; a hit Embree reports outside the exact triangle, a triangle it misses

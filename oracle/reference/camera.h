@@ -1,4 +1,4 @@
-// The oracle's camera, written from the README's conventions in double: the view basis, the projection (focal
+// The oracle's camera, written from the documented conventions (docs/conventions.md) in double: the view basis, the projection (focal
 // length, aspect, reversed-Z depth), the viewport mapping and the camera ray through a screen point. It shares
 // nothing with raster's transform code but the scene's Camera.
 #pragma once

@@ -1,6 +1,6 @@
 // The oracle's transparent layers: per sample, every hit of the ray through it on a transparent surface, collected
-// by an Embree intersection filter that records each hit and rejects it so that traversal goes on (README
-// "Transparency"). Which of them lie in front of the opaque surface, and in what order, is the comparison's to
+// by an Embree intersection filter that records each hit and rejects it so that traversal goes on
+// (docs/transparency.md). Which of them lie in front of the opaque surface, and in what order, is the comparison's to
 // decide with its bounds (layer_check.h).
 #pragma once
 

@@ -1,4 +1,4 @@
-// The oracle's resolve of a pixel that transparent layers reach (README "Transparency"): each sample's layers
+// The oracle's resolve of a pixel that transparent layers reach (docs/transparency.md): each sample's layers
 // composited over its opaque surface or the background, sorted front to back or as raster's weighted average, in
 // interval arithmetic with the float error raster's compositing can add, then averaged as pixel_resolve.h does.
 #pragma once

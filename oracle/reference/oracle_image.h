@@ -1,5 +1,5 @@
 // The oracle's own image: every pixel of its visibility buffer resolved with its shading at its own hits, and
-// turned into bytes as the README says (clamp to [0, 1], times 255, rounded half up).
+// turned into bytes as docs/conventions.md says (clamp to [0, 1], times 255, rounded half up).
 #pragma once
 
 #include <cstdint>

@@ -20,7 +20,7 @@ struct OracleTextureLevel {
     const glm::dvec3& texel(int x, int y) const { return texels[static_cast<size_t>(y) * width + x]; }
 };
 
-// Every level of a texture (README "Textures"): level 0 has the image's values, code / 255 (or / 65535), exactly;
+// Every level of a texture (docs/textures.md): level 0 has the image's values, code / 255 (or / 65535), exactly;
 // level k + 1 is max(1, floor(w / 2)) x max(1, floor(h / 2)) and each of its texels is the mean of level k over the
 // texel's footprint, a rectangle of w / w' by h / h' level-k texels, texels cut by its sides counting by the part
 // inside.

@@ -1,4 +1,4 @@
-// The oracle's resolve, as the README defines it: from a pixel's samples to the linear colour a correct raster
+// The oracle's resolve, as docs/oracle.md defines it: from a pixel's samples to the linear colour a correct raster
 // may write, per channel as an interval (every colour its float arithmetic may give), and the oracle's own bytes.
 //   SSAA: the mean over the samples of each covered sample's colour, the background for the uncovered ones.
 //   MSAA: each triangle of the pixel shaded once, at the first of its samples in pattern order, weighted by how many

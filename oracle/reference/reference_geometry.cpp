@@ -28,7 +28,7 @@ struct ClipVertex {
 
 enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };
 
-// The clip planes of the README's conventions (w >= near, w <= far, |x|, |y| <= side w), >= 0 inside.
+// The clip planes of the documented conventions (docs/conventions.md) (w >= near, w <= far, |x|, |y| <= side w), >= 0 inside.
 double plane_distance(int plane, const glm::dvec4& p, double near, double far, double side) {
     switch (plane) {
         case kNear: return p.w - near;

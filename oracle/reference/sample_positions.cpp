@@ -1,4 +1,4 @@
-// The documented sample tables (Vulkan's primsrast.adoc, "Standard sample locations"; the README's grid formula).
+// The documented sample tables (Vulkan's primsrast.adoc, "Standard sample locations"; docs/conventions.md's grid formula).
 #include "oracle/reference/sample_positions.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Where the samples of a pixel are, as the README's conventions document them: the Vulkan standard tables for
+// Where the samples of a pixel are, as the documented conventions (docs/conventions.md) document them: the Vulkan standard tables for
 // 1, 2, 4, 8 and 16 samples and the N x N grids, placed on the fixed-point grid of 1/2^max(snap_bits, 4) pixel.
 // Transcribed here from the documents, not from raster's sample code.
 #pragma once

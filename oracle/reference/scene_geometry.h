@@ -1,6 +1,6 @@
 // The scene's geometry as the oracle sees it, from the loaded Scene alone, in double: every triangle by its scene
 // id (meshes in order, each mesh's triangles in order), every vertex in world and view space, and for lit shading
-// the README's vertex normals, with how far raster's float versions of positions and normals can be from these.
+// the documented vertex normals (docs/conventions.md), with how far raster's float versions of positions and normals can be from these.
 #pragma once
 
 #include <array>
@@ -39,7 +39,7 @@ struct OracleScene {
 // before the triangle, else the mesh's own material.
 const Material& triangle_material(const Scene& scene, const OracleTriangle& triangle);
 
-// Normals, as the README defines them: a file's normals by the inverse transpose of the model matrix, renormalised;
+// Normals, as docs/conventions.md defines them: a file's normals by the inverse transpose of the model matrix, renormalised;
 // without them, the normalised mean of the unit normals of the vertex's faces in world space (degenerate faces
 // left out). Either is zero where it has no direction.
 OracleScene oracle_scene(const Scene& scene);

@@ -1,4 +1,4 @@
-// The oracle's shading in interval arithmetic: each step of the README's formula over boxes, widened by raster's
+// The oracle's shading in interval arithmetic: each step of the documented formula (docs/scene-format.md) over boxes, widened by raster's
 // float error for that step (shading_precision.h).
 #include "oracle/reference/shader.h"
 

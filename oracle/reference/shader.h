@@ -1,7 +1,7 @@
-// The oracle's shading, written from the README's formula, evaluated over boxes of barycentrics in interval
-// arithmetic: for a triangle and a box around a sample's exact barycentrics it gives every linear colour a correct
-// raster may compute there, its float error included (shading_precision.h). A box of zero width gives the
-// README's colour at a point, within float error.
+// The oracle's shading, written from the documented formula (docs/scene-format.md), evaluated over boxes of
+// barycentrics in interval arithmetic: for a triangle and a box around a sample's exact barycentrics it gives every
+// linear colour a correct raster may compute there, its float error included (shading_precision.h). A box of zero
+// width gives the documented colour at a point, within float error.
 //
 //   colour = base * (ambient * ambient_light + sum_lights diffuse * I * max(0, n.l)) + sum_lights specular * I * s
 //   I = light colour * intensity (/ r^2 with attenuation); s = max(0, lobe)^exponent (1 when the exponent is 0)
@@ -14,9 +14,9 @@
 //   s >= 1/2 and none elsewhere. Gooch: t = (1 + n.l) / 2 to the first light (1/2 without one), colour =
 //   base diffuse (alpha + t (beta - alpha)) + t (y, y, 0) + (1 - t) (0, 0, b) + the first light's Blinn highlight.
 //   Near a band's edge or the highlight's threshold the interval holds both sides: either is correct there.
-//   Textures (README "Textures"): the texture's value multiplies the base colour, and for Gouraud and flat the lit
+//   Textures (docs/textures.md): the texture's value multiplies the base colour, and for Gouraud and flat the lit
 //   base * diffuse but not the highlight: colour = T (base * diffuse) + specular.
-//   Shadows (README "Shadows"): each light that casts shadows is scaled by its visibility v at the shaded point:
+//   Shadows (docs/shadows.md): each light that casts shadows is scaled by its visibility v at the shaded point:
 //   its diffuse and specular terms (Phong, Blinn-Phong; flat and Gouraud per sample, their terms kept per light),
 //   cel's banded v n.l and highlight where v s >= 1/2, Gooch's t and highlight. v is what the ShadowOracle says,
 //   in one of three ways (ShadowAnswer).

@@ -1,4 +1,4 @@
-// The precision model, part 8: how far raster's float shading inputs and arithmetic can be from the README's
+// The precision model, part 8: how far raster's float shading inputs and arithmetic can be from the documented
 // formula evaluated exactly, so the oracle's colour interval (shader.h) holds every colour a correct raster may
 // write. Each bound is derived next to its constant; the interval arithmetic carries them through the formula.
 #pragma once

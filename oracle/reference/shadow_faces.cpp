@@ -1,4 +1,4 @@
-// The cube faces, face choice, face cameras and clip planes of README "Shadows".
+// The cube faces, face choice, face cameras and clip planes of docs/shadows.md.
 #include "oracle/reference/shadow_faces.h"
 
 #include <algorithm>
@@ -7,7 +7,7 @@
 namespace raster::oracle {
 
 const ShadowFace& shadow_face(int face) {
-    // README "Shadows": +x (up +y), -x (up +y), +y (up -z), -y (up +z), +z (up +y), -z (up +y); right = axis x up.
+    // docs/shadows.md: +x (up +y), -x (up +y), +y (up -z), -y (up +z), +z (up +y), -z (up +y); right = axis x up.
     static const ShadowFace faces[kShadowFaces] = {
         {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},   {{-1, 0, 0}, {0, 1, 0}, {0, 0, -1}}, {{0, 1, 0}, {0, 0, -1}, {-1, 0, 0}},
         {{0, -1, 0}, {0, 0, 1}, {-1, 0, 0}}, {{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}},  {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},

@@ -1,4 +1,4 @@
-// The shadow maps' conventions as README "Shadows" writes them, transcribed for the oracle from the document, not
+// The shadow maps' conventions as docs/shadows.md writes them, transcribed for the oracle from the document, not
 // from raster's code: the cube's faces, the face a direction falls in, each face's camera and the light's clip
 // planes.
 #pragma once

@@ -1,7 +1,7 @@
 // What a correct shadow map may answer for a footprint of face pixels (shadow_precision.h), decided from the
 // exact geometry the map is rendered from: every opaque triangle seen from the light on each cube face, clipped and
 // projected in double (reference_geometry.h, with the face's camera), with its edges marked where they can bound
-// the occluders' union (silhouette and open edges). README "Shadows" gives the map; precision.h part 10 the model.
+// the occluders' union (silhouette and open edges). docs/shadows.md gives the map; precision.h part 10 the model.
 #pragma once
 
 #include <cstdint>

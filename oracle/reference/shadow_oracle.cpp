@@ -29,7 +29,7 @@ const char* to_string(ShadowVerdict verdict) {
 
 ShadowOracle::ShadowOracle(const Scene& scene, const OracleScene& geometry, int threads)
     : scene_(scene), geometry_(geometry), index_of_light_(scene.lights.size(), -1) {
-    // Transparent surfaces cast no shadow (README "Transparency"): only opaque triangles occlude.
+    // Transparent surfaces cast no shadow (docs/transparency.md): only opaque triangles occlude.
     std::vector<uint8_t> casts(geometry.triangles.size(), 1);
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id)
         casts[id] = triangle_material(scene, geometry.triangles[id]).opacity >= 1.0f;

@@ -1,4 +1,4 @@
-// The precision model, part 10: what raster's shadow lookup (README "Shadows") may read and compare for a shading
+// The precision model, part 10: what raster's shadow lookup (docs/shadows.md) may read and compare for a shading
 // point that raster's float arithmetic can place anywhere in a box. Each bound is derived next to its constant.
 #pragma once
 
@@ -25,7 +25,7 @@ inline constexpr int kShadowTexelRoundings = 2;
 // every position the point itself may have: where no occluder's edge crosses it, the taps see what the point's own
 // direction sees.
 //
-// THE REFERENCE DEPTH depth - bias (README "Shadows"): the receiver plane's depth along the direction of each
+// THE REFERENCE DEPTH depth - bias (docs/shadows.md): the receiver plane's depth along the direction of each
 // corner of the filter's square, plane / (n . v_c), with v_c = axis + (s +- reach) right + (t +- reach) up: the
 // corner coordinates round once (1), v_c is exact (each component is one of them or +-1), the dot products round
 // 3 times relative to |n| |v_c| and |n| |d|, the ratio once and depth - ratio once; then the constant and slope

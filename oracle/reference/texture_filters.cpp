@@ -1,4 +1,4 @@
-// The oracle's texture filters over boxes (texture_filters.h), from README "Textures", with texture_precision.h's
+// The oracle's texture filters over boxes (texture_filters.h), from docs/textures.md, with texture_precision.h's
 // roundings.
 #include "oracle/reference/texture_filters.h"
 

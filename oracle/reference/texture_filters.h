@@ -17,10 +17,10 @@ struct TextureFootprintBox {
     UvBox d_dx, d_dy;  // d(u, v) / dx and / dy, per pixel
 };
 
-// The oracle's wrap of texel index i on an n-texel axis (README "Textures").
+// The oracle's wrap of texel index i on an n-texel axis (docs/textures.md).
 long long oracle_wrap(long long i, int n, TextureWrap wrap);
 
-// The filters of README "Textures" over the boxes.
+// The filters of docs/textures.md over the boxes.
 Interval3 nearest_over(const OracleTextureLevel& level, int level_index, const UvBox& uv, TextureWrap wrap);
 Interval3 bilinear_over(const OracleTextureLevel& level, int level_index, const UvBox& uv, TextureWrap wrap);
 Interval3 trilinear_over(const OracleTexture& texture, const UvBox& uv, Interval lod, TextureWrap wrap);

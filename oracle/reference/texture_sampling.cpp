@@ -70,7 +70,7 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
     }
     const glm::dvec3 on_plane = middle / (middle.x + middle.y + middle.z);
     UvDerivatives exact = ray_differential(geometry_.camera, t.view, t.uv, on_plane);
-    // README "Textures": under SSAA each of the N samples filters 1/sqrt(N) of the pixel's side; the derivatives
+    // docs/textures.md: under SSAA each of the N samples filters 1/sqrt(N) of the pixel's side; the derivatives
     // are linear in the step.
     exact.d_dx *= step_;
     exact.d_dy *= step_;

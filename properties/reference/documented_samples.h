@@ -1,4 +1,4 @@
-// The sample positions as ../shared/DESIGN.md, the README and Vulkan's primsrast.adoc document them, independently
+// The sample positions as ../shared/DESIGN.md, docs/conventions.md and Vulkan's primsrast.adoc document them, independently
 // of raster/geometry/sample_pattern.cpp (the oracle's transcription, which shares nothing with raster either), in
 // pixels and on the fixed-point grid.
 #pragma once

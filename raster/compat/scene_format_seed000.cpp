@@ -328,8 +328,8 @@ void set_canvas_transform(int width, int height, Scene& scene, glm::mat4& model)
 
 }  // namespace
 
-void read_seed000_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene) {
-    const Seed000Config config = read_seed000_config(root, reader);
+void read_seed000_scene(const Node& root, const DocumentReader& reader, const Seed000Config& config,
+                        const MeshFileLoader& load_mesh, Scene& scene) {
     RenderSettings& settings = scene.settings;
     settings.width = config.width;
     settings.height = config.height;

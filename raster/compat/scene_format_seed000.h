@@ -43,7 +43,7 @@ struct Seed000Light {
     glm::vec3 pos{0.0f};
     float intensity = 1.0f;
     glm::vec3 color_255{255.0f};
-    bool shadows = false;  // raster's extension (README "Seed 000"): the document's shadow-map extra
+    bool shadows = false;  // raster's extension (docs/seeds.md "Seed 000"): the document's shadow-map extra
 };
 
 // Everything a config says, read and checked; paths are resolved against the config file's folder.
@@ -63,10 +63,11 @@ struct Seed000Config {
     glm::dvec4 expected{0.0};                      // transform-test only
 };
 
-// The scene the config's task draws, from its parsed document; read_seed000_config reads the rest (task, output,
-// transform-test values). Internal to the scene loader.
-void read_seed000_scene(const Node& root, const DocumentReader& reader, const MeshFileLoader& load_mesh, Scene& scene);
+// The config a parsed document holds (task, output, camera, transforms, lights, transform-test values), and the scene
+// its task draws (`root` for the nodes a problem is blamed on). Internal to the scene loader.
 Seed000Config read_seed000_config(const Node& root, const DocumentReader& reader);
+void read_seed000_scene(const Node& root, const DocumentReader& reader, const Seed000Config& config,
+                        const MeshFileLoader& load_mesh, Scene& scene);
 
 // Reads and checks a config file. Throws InputError with file, line and column.
 Seed000Config load_seed000_config(const std::filesystem::path& path);

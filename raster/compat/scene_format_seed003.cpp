@@ -45,7 +45,7 @@ void read_seed003_scene(const Node& root, const DocumentReader& reader, const Sc
             Light light;
             light.position = reader.vec3(reader.required(node, "position"), "light position");
             light.color = reader.vec3(reader.required(node, "color"), "light color");
-            // raster's extension (README "Seed 003"): the document's shadow-map extra, per light.
+            // raster's extension (docs/seeds.md "Seed 003"): the document's shadow-map extra, per light.
             if (const Node& v = reader.optional(node, "shadows"); v.is_defined())
                 light.shadows = reader.boolean(v, "light shadows");
             scene.lights.push_back(light);

@@ -69,10 +69,12 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
     switch (out.format) {
         case SceneFormat::raster: read_raster_scene(root, reader, loaders, scene); break;
         case SceneFormat::seed003: read_seed003_scene(root, reader, loaders, scene); break;
-        case SceneFormat::seed000:
-            read_seed000_scene(root, reader, loaders.mesh, scene);
-            out.request = seed000_request(read_seed000_config(root, reader));
+        case SceneFormat::seed000: {
+            const Seed000Config config = read_seed000_config(root, reader);
+            read_seed000_scene(root, reader, config, loaders.mesh, scene);
+            out.request = seed000_request(config);
             break;
+        }
         case SceneFormat::seed001: read_seed001_scene(root, reader, loaders.mesh, scene); break;
     }
     finish_scene_textures(scene);

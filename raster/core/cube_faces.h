@@ -1,4 +1,4 @@
-// The cube shadow map's faces, written down once (README "Shadows"): which face a direction from the light falls
+// The cube shadow map's faces, written down once (docs/shadows.md): which face a direction from the light falls
 // in, each face's axis, right and up, and where on the face the direction lands.
 #pragma once
 

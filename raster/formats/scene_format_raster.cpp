@@ -1,4 +1,4 @@
-// The project's own scene format (YAML; README "Scene format"): every field optional except what a scene needs.
+// The project's own scene format (YAML; docs/scene-format.md): every field optional except what a scene needs.
 #include <glm/geometric.hpp>
 
 #include "raster/scene/validation.h"
@@ -142,7 +142,7 @@ Light read_light(const Node& node, const DocumentReader& reader) {
     return light;
 }
 
-// A material's texture keys: texture (an image file), filter, wrap, max_anisotropy (README "Textures").
+// A material's texture keys: texture (an image file), filter, wrap, max_anisotropy (docs/textures.md).
 void read_texture_keys(const Node& node, const DocumentReader& reader, const TextureFileLoader& load_texture,
                        Material& material) {
     const Node& file = reader.optional(node, "texture");
@@ -211,7 +211,7 @@ MeshData read_inline_mesh(const Node& node, const DocumentReader& reader) {
         for (size_t k = 1; k + 1 < corners.size(); ++k) mesh.triangles.push_back({{corners[0], corners[k], corners[k + 1]}});
         if (mesh.triangles.size() > kMaxMeshTriangles) reader.fail(face, "too many triangles");
     }
-    // Colours may be a single number for grey (README "Scene format"); normals may not.
+    // Colours may be a single number for grey (docs/scene-format.md); normals may not.
     auto per_vertex = [&](const char* key, std::vector<glm::vec3>& out, bool grey_ok) {
         const Node& list = reader.optional(node, key);
         if (!list.is_defined()) return;

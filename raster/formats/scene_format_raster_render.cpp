@@ -1,4 +1,4 @@
-// The raster scene format's `render` section (README "Scene format"): samples and pattern, shading and its
+// The raster scene format's `render` section (docs/scene-format.md): samples and pattern, shading and its
 // parameters, culling, the precision modes and the shadow maps' settings.
 #include <string>
 
@@ -7,7 +7,7 @@
 namespace raster {
 namespace {
 
-// render.shadows: resolution, bias, slope_bias, pcf, each optional (README "Shadows").
+// render.shadows: resolution, bias, slope_bias, pcf, each optional (docs/shadows.md).
 void read_shadow_settings(const Node& node, const DocumentReader& reader, ShadowSettings& shadows) {
     reader.expect_map(node, "shadows");
     reader.check_keys(node, {"resolution", "bias", "slope_bias", "pcf"});
@@ -29,7 +29,7 @@ void read_shadow_settings(const Node& node, const DocumentReader& reader, Shadow
     }
 }
 
-// render.transparency: mode, max_fragments, each optional (README "Transparency").
+// render.transparency: mode, max_fragments, each optional (docs/transparency.md).
 void read_transparency_settings(const Node& node, const DocumentReader& reader, TransparencySettings& transparency) {
     reader.expect_map(node, "transparency");
     reader.check_keys(node, {"mode", "max_fragments"});

@@ -1,5 +1,5 @@
 // Transparency: the pass that blends the surfaces whose material opacity is below 1 over the opaque frame
-// (README "Transparency"). The opaque surfaces are rasterized and resolved first, as in any frame; then every
+// (docs/transparency.md). The opaque surfaces are rasterized and resolved first, as in any frame; then every
 // transparent fragment in front of a sample's opaque surface is kept (an A-buffer, `sorted`) or accumulated
 // (`weighted`), and only the pixels some transparent fragment reaches are resolved again.
 #pragma once

@@ -12,7 +12,7 @@
 
 namespace raster {
 
-// How a texture is looked up (README "Textures"). Only trilinear and anisotropic read the mip chain.
+// How a texture is looked up (docs/textures.md). Only trilinear and anisotropic read the mip chain.
 enum class TextureFilter {
     nearest,      // the texel under the point, level 0 (magnified and minified alike: aliases)
     bilinear,     // the 2x2 texels around the point, level 0
@@ -59,7 +59,7 @@ struct Material {
     glm::vec3 diffuse{0.7f};
     glm::vec3 specular{0.2f};
     float exponent = 32.0f;
-    float opacity = 1.0f;  // 1 opaque; below 1 the surface is blended over what lies behind it (README "Transparency")
+    float opacity = 1.0f;  // 1 opaque; below 1 the surface is blended over what lies behind it (docs/transparency.md)
     std::optional<TextureBinding> texture;  // none for an untextured material: no texture memory, no texture work
     std::string name;                       // the MTL or scene name, for messages; may be empty
 };

@@ -53,7 +53,7 @@ inline constexpr uint64_t kMaxMeshVertices = 1u << 24;   // 16.7M vertices
 inline constexpr uint64_t kMaxMeshTriangles = 1u << 24;  // 16.7M triangles
 inline constexpr uint64_t kMaxPolygonVertices = 1024;    // per face, before triangulation
 // The most triangles a scene's meshes may hold together: the renderer's setup references name a frame's setups in
-// 32 bits (pipeline/setup_table.h).
+// 32 bits (geometry/setup_table.h).
 inline constexpr uint64_t kMaxSceneTriangles = uint64_t{1} << 28;  // 268M triangles
 
 }  // namespace raster

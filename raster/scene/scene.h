@@ -42,7 +42,7 @@ struct Camera {
 };
 
 // Point light; colour is linear RGB. With `attenuate`, the light's contribution is divided by r^2. With `shadows`,
-// the light casts shadows through a cube shadow map (README "Shadows"); without, it lights every point it faces.
+// the light casts shadows through a cube shadow map (docs/shadows.md); without, it lights every point it faces.
 struct Light {
     glm::vec3 position{0.0f};
     glm::vec3 color{1.0f};
@@ -80,7 +80,7 @@ struct GoochTones {
     float beta = 0.6f;
 };
 
-// The shadow maps of the lights that cast shadows (README "Shadows"): a cube of six resolution x resolution faces
+// The shadow maps of the lights that cast shadows (docs/shadows.md): a cube of six resolution x resolution faces
 // per light, holding the view depth of the nearest opaque surface at each texel centre. A point is lit by the
 // light where its depth along the face's axis, less the bias, is at most the map's depth:
 //   bias = bias * depth + slope_bias * (how far the receiver's plane comes towards the light across the filter's
@@ -95,7 +95,7 @@ struct ShadowSettings {
 inline constexpr int kMinShadowResolution = 16;
 inline constexpr int kMaxShadowResolution = 8192;
 
-// How transparent surfaces are composited (README "Transparency"): `sorted` keeps every fragment of a sample in an
+// How transparent surfaces are composited (docs/transparency.md): `sorted` keeps every fragment of a sample in an
 // A-buffer, sorts them by depth and composites front to back (exact, with a memory cap); `weighted` accumulates
 // them in any order into a weighted average (Bavoil and Myers 2008): no lists and no sort, exact for one layer and
 // for layers of one colour, approximate otherwise.

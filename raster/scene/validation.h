@@ -14,8 +14,8 @@ namespace raster {
 // image); scenes above kMaxFrameBytes are refused.
 inline constexpr uint64_t kMaxFrameBytes = uint64_t{4} << 30;  // 4 GiB
 uint64_t frame_bytes(const RenderSettings& settings);
-// Bytes the shadow maps of `scene` need: 6 faces of resolution^2 floats per light that casts shadows (README
-// "Shadows"); with frame_bytes, at most kMaxFrameBytes.
+// Bytes the shadow maps of `scene` need: 6 faces of resolution^2 floats per light that casts shadows
+// (docs/shadows.md); with frame_bytes, at most kMaxFrameBytes.
 uint64_t shadow_map_bytes(const Scene& scene);
 
 // Checks image size and frame memory (shadow maps included), samples and pattern, camera (near > 0, far > near and at most 2^126, fov in

@@ -31,7 +31,7 @@ inline constexpr int kMaxTextureDimension = 16384;
 inline constexpr uint64_t kMaxTextureTexels = uint64_t{1} << 25;  // 32 M texels: 384 MiB as float RGB
 
 // Decodes an image (PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM: whatever stb_image reads) into level 0.
-// Colour space (README "Textures"): an 8- or 16-bit texel's value is the float nearest its code over 255 or 65535
+// Colour space (docs/textures.md): an 8- or 16-bit texel's value is the float nearest its code over 255 or 65535
 // (an HDR value is taken as it is), in the one space raster uses for every colour, so an unlit texture drawn one
 // texel per pixel writes back its own bytes. Grey images are replicated to RGB; alpha is not read.
 // Throws InputError naming `name` when the bytes are not an image stb_image reads or exceed the limits above.

@@ -121,7 +121,7 @@ const char* kScene =
     "    faces: [[0, 1, 2]]\n"
     "    vertex_colors: [[1, 0, 0], [0, 1, 0], [0, 0, 1]]\n";
 
-// The flags of `raster render` as the README lists them.
+// The flags of `raster render` as docs/cli.md lists them.
 const std::vector<std::string> kReadmeFlags = {"-o",      "--samples", "--pattern", "--msaa",      "--shading", "--snap-bits",
                                                "--cull",  "--alpha",   "--depth-out", "--threads", "--stats"};
 

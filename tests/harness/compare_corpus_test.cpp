@@ -61,7 +61,7 @@ TEST_P(CorpusAgainstOracle, hasNoGenuineDisagreement) {
     } else {
         EXPECT_EQ(genuine, 0u) << harness::comparison_summary(comparison);
     }
-    // Every sample is classed, at most 0.1% are excused as ambiguous (the aim the README states), and every pixel
+    // Every sample is classed, at most 0.1% are excused as ambiguous (the aim docs/oracle.md states), and every pixel
     // whose samples all agree has its colour judged.
     uint64_t total = 0;
     for (uint64_t n : counts.by_class) total += n;

@@ -178,7 +178,7 @@ TEST_P(SceneRejection, namesTheFileLineColumnAndProblem) {
         if (rejection.column > 0) {
             EXPECT_EQ(error.column(), rejection.column) << error.what();
         }
-        // The full message starts with "file:line:", as the README's example shows.
+        // The full message starts with "file:line:", as docs/cli.md's example shows.
         EXPECT_TRUE(contains(error.what(), file + ":" + std::to_string(rejection.line) + ":"));
         EXPECT_TRUE(contains(error.message(), rejection.problem));
         for (std::string part : rejection.also) {
@@ -211,14 +211,14 @@ TEST(SceneLoader, reads16384By1Pixels) {
 }
 
 TEST(SceneLoader, readsFrameBuffersUpToTheMemoryCap) {
-    // README: 28 bytes per sample plus 4 per pixel, at most 4 GiB. At 16 samples that is 452 bytes a pixel:
+    // docs: 28 bytes per sample plus 4 per pixel, at most 4 GiB. At 16 samples that is 452 bytes a pixel:
     // 3082 x 3083 pixels need 4,294,816,312 bytes (fits), 3083 x 3083 need 4,296,209,828 (does not).
     EXPECT_NO_THROW(parse_scene(with_triangle("image: {width: 3082, height: 3083}\nrender: {samples: 16}\n"),
                                 "scene.yaml"));
     EXPECT_THROW(
         parse_scene(with_triangle("image: {width: 3083, height: 3083}\nrender: {samples: 16}\n"), "scene.yaml"),
         InputError);
-    // README's example: 800 x 800 at 16 samples is fine.
+    // docs' example: 800 x 800 at 16 samples is fine.
     EXPECT_NO_THROW(
         parse_scene(with_triangle("image: {width: 800, height: 800}\nrender: {samples: 16}\n"), "scene.yaml"));
 }

@@ -66,7 +66,7 @@ TEST(SceneLoader, seed003SceneInTheDocumentsKeySetLoads) {
     expect_vec3(scene.camera.target, 0, 0, 0);
     expect_vec3(scene.camera.up, 0, 1, 0);
     EXPECT_FLOAT_EQ(scene.camera.fov_y_degrees, 60.0f);
-    // README: the document's default shading is per-fragment Blinn-Phong.
+    // docs: the document's default shading is per-fragment Blinn-Phong.
     EXPECT_EQ(scene.settings.shading, raster::ShadingMode::blinn_phong);
     ASSERT_EQ(scene.lights.size(), 1u);
     expect_vec3(scene.lights[0].position, 2, 3, 4);

@@ -1,4 +1,4 @@
-// Scene loader tests, the raster format: README defaults and value forms, transform chains, inline meshes.
+// Scene loader tests, the raster format: the documented defaults and value forms, transform chains, inline meshes.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -67,7 +67,7 @@ std::vector<Rejection> rejections() {
         {"cornerOfFourParts", kTriangle + "f 1/1/1/1 2 3\n", 4, "face corner '1/1/1/1' has more than 3 parts"},
         {"cornerWithAnEmptyNormal", kTriangle + "f 1/1/ 2 3\n", 4, "face corner '1/1/' has an empty normal index"},
         {"cornerThatIsNoIndex", kTriangle + "f 1 2 x3\n", 4, "face corner 'x3' is not a vertex index"},
-        // The limit on corners per face (README: polygons of at most 1,024 vertices).
+        // The limit on corners per face (docs: polygons of at most 1,024 vertices).
         {"faceOverThePolygonLimit", face_of(1025), 1026, "more than 1024"},
         // Refused by tinyobjloader, in its words, with its line in them: a texture index that reads as 0 (an
         // empty one at the end of the line too), an `l` or `p` corner that does, a negative `vw` joint id.

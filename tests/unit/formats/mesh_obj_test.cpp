@@ -188,7 +188,7 @@ TEST(ObjLoader, resolvesNegativeIndicesRelativeToPrecedingVertices) {
 }
 
 TEST(ObjLoader, triangulatesAPolygonAtTheLimit) {
-    // README: polygons of at most 1,024 vertices (mesh_obj_rejection_test refuses 1,025).
+    // docs: polygons of at most 1,024 vertices (mesh_obj_rejection_test refuses 1,025).
     std::string text;
     for (int i = 0; i < 1025; ++i) {  // corners on a circle: a convex polygon
         const double angle = 2.0 * M_PI * i / 1025.0;

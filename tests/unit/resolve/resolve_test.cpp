@@ -136,8 +136,12 @@ TEST(PixelResolver, givesEachPixelTheWeightedMeanOfItsShadedSamplesWhateverElseI
         resolver.finish(batch);
         // Each queue the case uses took more than two batches' worth of points, so it was shaded part-way.
         const QueuedPoints queued = queued_points(pixels, c.samples, c.msaa);
-        if (c.msaa || c.samples == 1) ASSERT_GT(queued.one_triangle, 2 * PixelResolver::kBatchPoints);
-        if (c.samples > 1) ASSERT_GT(queued.other, 2 * PixelResolver::kBatchPoints);
+        if (c.msaa || c.samples == 1) {
+            ASSERT_GT(queued.one_triangle, 2 * PixelResolver::kBatchPoints);
+        }
+        if (c.samples > 1) {
+            ASSERT_GT(queued.other, 2 * PixelResolver::kBatchPoints);
+        }
         EXPECT_EQ(together, alone);
         // Against the rule: the float sums may round a value across a half, so one step either way.
         int exact = 0;

@@ -34,7 +34,7 @@ Scene pane_scene(std::vector<SceneMesh> panes, int samples = 1) {
     return scene;
 }
 
-// The bytes of a linear value, as README "Conventions" writes them.
+// The bytes of a linear value, as docs/conventions.md writes them.
 int byte_of(double v) { return static_cast<int>(std::floor(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5)); }
 
 RenderResult draw(const Scene& scene, RasterPath path = RasterPath::tiled) {

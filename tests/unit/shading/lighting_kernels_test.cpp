@@ -130,7 +130,7 @@ TEST(LightingKernels, aPointGetsTheSameBitsAloneAsInABatch) {
     }
 }
 
-// Blinn-Phong in double precision, written from the formula (README "Shading"), not from the kernel.
+// Blinn-Phong in double precision, written from the formula (docs/scene-format.md "Shading"), not from the kernel.
 glm::dvec3 reference_term(const Case& c, size_t j, bool diffuse_term) {
     const glm::dvec3 p(c.batch.position[0][j], c.batch.position[1][j], c.batch.position[2][j]);
     glm::dvec3 n(c.batch.normal[0][j], c.batch.normal[1][j], c.batch.normal[2][j]);
