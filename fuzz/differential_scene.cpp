@@ -11,7 +11,7 @@
 #include "oracle/reference/reference_geometry.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/core/errors.h"
-#include "raster/scene/camera_matrices.h"
+#include "raster/transform/camera_matrices.h"
 #include "raster/scene/validation.h"
 
 namespace raster::fuzz {

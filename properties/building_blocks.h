@@ -9,7 +9,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 
 namespace raster::properties {
 

@@ -17,7 +17,7 @@
 #include "properties/generators.h"
 #include "properties/printing.h"
 #include "properties/property_registry.h"
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 #include "raster/geometry/vertex_stage.h"
 #include "raster/scene/scene.h"
 

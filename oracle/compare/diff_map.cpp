@@ -7,7 +7,7 @@
 
 namespace raster::oracle {
 
-Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
+OracleImage diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
                const RasterPixels& raster_image, const ShadowLayers& shadows) {
     auto flag = [](const std::vector<uint8_t>* layer, size_t pixel) {
         return layer && !layer->empty() ? (*layer)[pixel] : uint8_t{0};
@@ -15,7 +15,11 @@ Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::
     uint8_t open_verdicts = 0;
     for (int v = 0; v < kShadowVerdictCount; ++v)
         if (is_open(static_cast<ShadowVerdict>(v))) open_verdicts |= static_cast<uint8_t>(1u << v);
-    Image map(raster_image.width, raster_image.height, 3);
+    OracleImage map;
+    map.width = raster_image.width;
+    map.height = raster_image.height;
+    map.channels = 3;
+    map.pixels.assign(static_cast<size_t>(map.width) * map.height * 3, 0);
     for (int y = 0; y < map.height; ++y) {
         for (int x = 0; x < map.width; ++x) {
             const size_t pixel = static_cast<size_t>(y) * map.width + x;
@@ -26,7 +30,7 @@ Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::
                 ambiguous |= is_ambiguous(classes[first + s]);
             }
             ambiguous |= flag(shadows.layers_open, pixel) != 0;
-            uint8_t* out = map.at(x, y);
+            uint8_t* out = &map.pixels[pixel * 3];
             if (genuine || colour_genuine[pixel] || ambiguous) {
                 std::copy_n(genuine                            ? kGenuineColor
                             : flag(shadows.genuine, pixel)     ? kShadowDisagreementColor

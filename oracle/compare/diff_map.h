@@ -1,7 +1,7 @@
 // The disagreement map: one pixel per pixel, red where a sample disagrees genuinely, magenta where every sample
 // agrees but the colour is outside its range, orange where that is explained by a shadow test, yellow where a
-// sample is only ambiguous (or the transparent layers leave the pixel open), blue where the shadow model left a light's visibility open, and the raster image in
-// dimmed grey where everything agrees.
+// sample is only ambiguous (or the transparent layers leave the pixel open), blue where the shadow model left a
+// light's visibility open, and the raster image in dimmed grey where everything agrees.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 
 #include "oracle/compare/raster_output.h"
 #include "oracle/compare/sample_classifier.h"
-#include "raster/image/image.h"
+#include "oracle/reference/oracle_image.h"
 
 namespace raster::oracle {
 
@@ -30,8 +30,8 @@ struct ShadowLayers {
 
 // `classes` holds width * height * samples entries in visibility-buffer order, `colour_genuine` one flag per pixel
 // (check_colours' genuine_pixels); `raster_image` is width x height. An agreeing pixel is grey at 20 + 35% of the
-// raster image's luma, so the scene stays recognisable underneath.
-Image diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
+// raster image's luma, so the scene stays recognisable underneath. The map is RGB bytes, row by row from the top.
+OracleImage diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
                const RasterPixels& raster_image, const ShadowLayers& shadows = {});
 
 }  // namespace raster::oracle

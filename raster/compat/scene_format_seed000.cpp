@@ -14,7 +14,7 @@
 #include "raster/core/file_io.h"
 #include "raster/scene/validation.h"
 #include "raster/scene/sample_counts.h"
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 
 namespace raster {
 

@@ -10,7 +10,7 @@
 
 #include "raster/scene/validation.h"
 #include "raster/compat/seed_scene_readers.h"
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 
 namespace raster {
 namespace {

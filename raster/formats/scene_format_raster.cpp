@@ -4,7 +4,7 @@
 #include "raster/scene/validation.h"
 #include "raster/scene/sample_counts.h"
 #include "raster/formats/scene_formats.h"
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 #include "raster/texture/texture.h"
 
 namespace raster {

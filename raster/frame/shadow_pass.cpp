@@ -6,10 +6,10 @@
 
 #include <glm/common.hpp>
 
-#include "raster/core/cube_faces.h"
+#include "raster/transform/cube_faces.h"
 #include "raster/geometry/front_end.h"
 #include "raster/geometry/vertex_stage.h"
-#include "raster/scene/camera_matrices.h"
+#include "raster/transform/camera_matrices.h"
 
 namespace raster {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 
 namespace raster {
 

@@ -9,7 +9,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "raster/scene/camera_matrices.h"
+#include "raster/transform/camera_matrices.h"
 #include "raster/scene/scene.h"
 
 namespace raster {

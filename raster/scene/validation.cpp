@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 
 #include "raster/core/errors.h"
-#include "raster/scene/camera_matrices.h"
 #include "raster/scene/sample_counts.h"
 
 namespace raster {
@@ -30,6 +29,30 @@ uint64_t shadow_map_bytes(const Scene& scene) {
 namespace {
 
 bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+bool fits_float(double value) { return std::isfinite(static_cast<float>(value)); }
+
+// What is wrong with the projection raster stores in float (a reversed-Z perspective, docs/conventions.md "Depth"):
+// its scale terms focal / aspect and focal, with focal = 1 / tan(fov / 2), overflow for a field of
+// view too narrow, and its depth terms n / (f - n) and n f / (f - n) for a near and far too close for their size.
+// Empty when every term is a finite float. The scene checks only that the numbers fit; the matrix itself is built
+// in raster/transform, which the scene does not see.
+std::string projection_problem(const Camera& camera, int width, int height) {
+    const double focal = 1.0 / std::tan(static_cast<double>(camera.fov_y_degrees) * (M_PI / 360.0));
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    char text[64];
+    if (!fits_float(focal) || !fits_float(focal / aspect)) {
+        std::snprintf(text, sizeof text, "%g", double(camera.fov_y_degrees));
+        return std::string("camera field of view ") + text + " degrees is too narrow: its projection overflows float";
+    }
+    const double n = camera.near, f = camera.far;
+    if (!fits_float(n / (f - n)) || !fits_float(n * f / (f - n))) {
+        std::snprintf(text, sizeof text, "%.9g and %.9g", n, f);
+        return std::string("camera near and far (") + text +
+               ") are too close for their size: the projection's depth terms overflow float";
+    }
+    return "";
+}
 
 }  // namespace
 
@@ -102,15 +125,10 @@ void validate_scene(const Scene& scene) {
     auto fail = [&](const std::string& message) { throw InputError(scene.path, 0, 0, message); };
     if (std::string problem = settings_problem(scene.settings); !problem.empty()) fail(problem);
     if (const auto problem = camera_problem(scene.camera)) fail(problem->message);
-    // A field of view so narrow that 1 / tan(fov / 2) overflows float gives an infinite projection: nothing could
-    // be drawn, and camera rays (the oracle's) would be NaN.
-    const glm::mat4 projection = projection_matrix(scene.camera, scene.settings.width, scene.settings.height);
-    for (int column = 0; column < 4; ++column)
-        if (!finite3(glm::vec3(projection[column])) || !std::isfinite(projection[column].w)) {
-            char fov[32];
-            std::snprintf(fov, sizeof fov, "%g", double(scene.camera.fov_y_degrees));
-            fail(std::string("camera field of view ") + fov + " degrees is too narrow: its projection overflows float");
-        }
+    // An infinite projection draws nothing, and camera rays (the oracle's) would be NaN.
+    if (std::string problem = projection_problem(scene.camera, scene.settings.width, scene.settings.height);
+        !problem.empty())
+        fail(problem);
     if (triangle_count(scene) > kMaxSceneTriangles)
         fail("too many triangles: " + std::to_string(triangle_count(scene)) + " (limit " +
              std::to_string(kMaxSceneTriangles) + ")");

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "raster/core/cube_faces.h"
+#include "raster/transform/cube_faces.h"
 #include "raster/scene/scene.h"
 
 namespace raster {

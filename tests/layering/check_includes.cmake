@@ -7,7 +7,7 @@ file(GLOB_RECURSE sources RELATIVE ${ROOT}
   ${ROOT}/properties/*.h ${ROOT}/properties/*.cpp ${ROOT}/fuzz/*.h
   ${ROOT}/fuzz/*.cpp ${ROOT}/bench/*.h ${ROOT}/bench/*.cpp ${ROOT}/tools/*.h ${ROOT}/tools/*.cpp ${ROOT}/tests/*.h
   ${ROOT}/tests/*.cpp)
-set(roots "raster/(core|scene|formats|compat|image|texture|simd|geometry|rasterize|shading|resolve|frame)/|oracle/(reference|compare|report)/|harness/(comparison|tradeoff)/|apps/|properties/|fuzz/|bench/|tools/|tests/support/")
+set(roots "raster/(core|scene|transform|formats|compat|image|texture|simd|geometry|rasterize|shading|resolve|frame)/|oracle/(reference|compare|report)/|harness/(comparison|tradeoff)/|apps/|properties/|fuzz/|bench/|tools/|tests/support/")
 set(problems "")
 foreach(source IN LISTS sources)
   file(STRINGS ${ROOT}/${source} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")

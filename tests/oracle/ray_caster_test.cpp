@@ -19,7 +19,7 @@
 #include "raster/compat/scene_loader.h"
 #include "raster/frame/render.h"
 #include "raster/geometry/sample_pattern.h"
-#include "raster/scene/camera_matrices.h"
+#include "raster/transform/camera_matrices.h"
 #include "tests/support/oracle_test_scenes.h"
 
 namespace raster::oracle {

@@ -15,7 +15,7 @@
 #include "oracle/reference/shadow_index.h"
 #include "oracle/reference/shadow_oracle.h"
 #include "oracle/reference/shadow_precision.h"
-#include "raster/core/cube_faces.h"
+#include "raster/transform/cube_faces.h"
 #include "raster/frame/shadow_pass.h"
 #include "raster/geometry/vertex_stage.h"
 #include "tests/support/quad_meshes.h"

@@ -205,6 +205,26 @@ TEST(SceneLoader, readsFieldsOfViewJustInsideTheOpenInterval) {
     EXPECT_NO_THROW(parse_scene(with_triangle("camera:\n  fov: 0.5\n"), "scene.yaml"));
 }
 
+// The projection's terms must fit a float: its scale terms grow as 1 / tan(fov / 2), its depth terms as
+// n f / (f - n). Each refusal names the camera value to change.
+TEST(SceneLoader, refusesAProjectionWhoseTermsOverflowFloat) {
+    const std::pair<std::string, std::string> cases[] = {
+        // 1 / tan(1e-37 degrees / 2) is about 1.1e39, past the largest float (3.4e38).
+        {"camera:\n  fov: 1e-37\n", "camera field of view 1e-37 degrees is too narrow"},
+        // near and far a float apart (about 1e28) at 1e35: n f / (f - n) is about 1e42.
+        {"camera:\n  near: 1e35\n  far: 1.0000001e35\n", "are too close for their size"},
+    };
+    for (const auto& [camera, problem] : cases) {
+        try {
+            parse_scene(with_triangle(camera), "scene.yaml");
+            ADD_FAILURE() << "no InputError for " << camera;
+        } catch (const InputError& error) {
+            EXPECT_EQ(error.file(), "scene.yaml");
+            EXPECT_TRUE(contains(error.message(), problem)) << error.message();
+        }
+    }
+}
+
 TEST(SceneLoader, reads16384By1Pixels) {
     // 16384 x 1 is within every limit.
     EXPECT_NO_THROW(parse_scene(with_triangle("image: {width: 16384, height: 1}\n"), "scene.yaml"));

@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/compat/scene_loader.h"
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 #include "raster/geometry/vertex_stage.h"
 
 namespace raster {

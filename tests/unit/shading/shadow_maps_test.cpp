@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "raster/core/cube_faces.h"
+#include "raster/transform/cube_faces.h"
 #include "raster/frame/render.h"
 #include "raster/geometry/setup_table.h"
 #include "raster/geometry/vertex_stage.h"

@@ -1,7 +1,7 @@
 // A camera's view and projection matrices.
-#include "raster/scene/camera_matrices.h"
+#include "raster/transform/camera_matrices.h"
 
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 
 namespace raster {
 

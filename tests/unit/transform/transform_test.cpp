@@ -1,5 +1,5 @@
 // Matrices send known points to known places: model transforms, look-at, reversed-Z projection, viewport.
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 
 #include <cmath>
 

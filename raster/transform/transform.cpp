@@ -1,6 +1,6 @@
 // Model, view, projection and viewport matrices: each written out entry by entry (GLM matrices are column-major,
 // so m[col][row]).
-#include "raster/core/transform.h"
+#include "raster/transform/transform.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-// A camera's view and projection matrices: what the scene's Camera means, as core/transform.h builds them.
+// A camera's view and projection matrices: what the scene's Camera means, as transform.h builds them.
 #pragma once
 
 #include <glm/mat4x4.hpp>
