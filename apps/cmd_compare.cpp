@@ -77,8 +77,7 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
     options.alpha = flags.settings.alpha;
     // What `raster render` writes for this file: its colour image unless the file asks for the depth image; and the
     // depth image, which the file or --depth-out can ask for.
-    const RenderJob render_writes = render_job_for(flags.scene, file.request, "", "");
-    options.colour_output = render_writes.outputs.front().kind == OutputKind::colour;
+    options.colour_output = image_kind_for(file.request) == OutputKind::colour;
     options.depth_output = true;
     std::unique_ptr<harness::Comparison> comparison;
     try {

@@ -10,6 +10,7 @@
 
 #include "apps/command.h"
 #include "apps/progress_bar.h"
+#include "apps/render_outputs.h"
 #include "harness/comparison/comparison_output.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
@@ -170,7 +171,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
         for (size_t i = 0; i < scenes.size(); ++i) {
             const Scene& scene = scenes[i].scene;
             // What `raster render` writes for the file: its colour image unless it asks for the depth image.
-            options.colour_output = !scenes[i].request.depth_image;
+            options.colour_output = image_kind_for(scenes[i].request) == OutputKind::colour;
             oracle::ReportRow row;
             row.name = fs::path(scene.path).stem().string();
             progress.show(i, row.name);

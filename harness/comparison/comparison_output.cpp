@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "harness/comparison/decoded_image.h"
 #include "oracle/compare/diff_map.h"
 
 namespace raster::harness {
@@ -224,14 +225,8 @@ Image diff_map(const Comparison& c) {
     for (size_t i = 0; i < wrong_bytes.size(); ++i)
         wrong_bytes[i] = (c.colour.written && c.colour.genuine[i]) ||
                          (c.depth.written && (c.depth.png.genuine_pixels[i] | c.depth.ppm.genuine_pixels[i]));
-    oracle::OracleImage map = oracle::diff_map(c.visibility.classes, c.samples, wrong_bytes, pixels_of(c.raster.image),
-                                               {&c.shadows.genuine, &c.shadows.seen, &c.transparency.open});
-    Image image;
-    image.width = map.width;
-    image.height = map.height;
-    image.channels = map.channels;
-    image.pixels = std::move(map.pixels);
-    return image;
+    return image_of(oracle::diff_map(c.visibility.classes, c.samples, wrong_bytes, pixels_of(c.raster.image),
+                                     {&c.shadows.genuine, &c.shadows.seen, &c.transparency.open}));
 }
 
 }  // namespace raster::harness
