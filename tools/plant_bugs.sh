@@ -251,21 +251,12 @@ echo "plant_bugs: correct build done in $seconds s" >&2
 
 # --- Properties and fuzz invariants ---
 
-# Each check is a process that writes files (its log and exit code under $runs), and a read_* function that parses
-# them. They run one after another: run all at once they took 66 s on 7 entries against 54 s one by one,
-# since the properties' two-thread backends and compare's threads already keep both cores busy.
-
-# properties_process LABEL: every property on every backend, into $runs/LABEL.properties.txt.
-properties_process() {
-  (cd "$src" && RC_PARAMS=$rc_params timeout 1200 "$build/$properties_binary" --gtest_color=no; exit $?) \
-    >"$runs/$1.properties.txt" 2>&1 || true
-}
-
-# read_properties LABEL: sets failed_properties (Suite.Name, backends folded, sorted) and failed_drawing (the ones
-# that drew). A crash counts as a failure of the property that was running. The correct build's run must pass
-# everything, the registry's tests and the regression cases included.
-read_properties() {
+# run_properties LABEL: every property on every backend; sets failed_properties (Suite.Name, backends folded,
+# sorted) and failed_drawing (the ones that drew). A crash counts as a failure of the property that was running.
+# The correct build's run must pass everything, the registry's tests and the regression cases included.
+run_properties() {
   local log=$runs/$1.properties.txt
+  (cd "$src" && RC_PARAMS=$rc_params timeout 1200 "$build/$properties_binary" --gtest_color=no; exit $?) >"$log" 2>&1 || true
   local failed running
   failed=$(sed -n -E 's/^\[  FAILED  \] ([A-Za-z0-9_]+\.[A-Za-z0-9_]+(\/[a-z0-9_]+)?)( \(.*)?$/\1/p' "$log" | sort -u)
   running=$(awk '/^\[ RUN      \]/ { t = $4 } /^\[       OK \]|^\[  FAILED  \]/ { t = "" } END { print t }' "$log")
@@ -277,57 +268,31 @@ read_properties() {
   failed_properties=${failed_properties% } failed_drawing=${failed_drawing% }
 }
 
-# fuzz_process LABEL NAME: the NAME (raster or differential) replayer over its corpus and regressions, into
-# $runs/LABEL.fuzz-NAME.txt, its exit code into $runs/LABEL.fuzz-NAME.rc.
-fuzz_process() {
-  local name=$2 inputs=("$src/corpus/fuzz/$2") rc=0
-  [[ -d $src/corpus/regressions/$name ]] && inputs+=("$src/corpus/regressions/$name")
-  # A failed check traps; the subshell's own "Illegal instruction" note goes to the log with the rest (the trailing
-  # exit keeps bash from exec-ing the last command, which would leave the note to this script's stderr).
-  (cd "$src" && timeout 600 "$build/fuzz/${name}_fuzzer" -runs=0 "${inputs[@]}"; exit $?) \
-    >"$runs/$1.fuzz-$name.txt" 2>&1 || rc=$?
-  echo "$rc" >"$runs/$1.fuzz-$name.rc"
-}
-
-# read_fuzz LABEL: sets failed_fuzz (fuzz:raster, fuzz:differential: the replayers that failed).
-read_fuzz() {
-  local name
+# run_fuzz LABEL: each replayer over its corpus and regressions; sets failed_fuzz (fuzz:raster, fuzz:differential).
+run_fuzz() {
+  local name inputs=() log
   failed_fuzz=""
   for name in raster differential; do
-    [[ $(cat "$runs/$1.fuzz-$name.rc") == 0 ]] || failed_fuzz+=${failed_fuzz:+ }fuzz:$name
+    inputs=("$src/corpus/fuzz/$name")
+    [[ -d $src/corpus/regressions/$name ]] && inputs+=("$src/corpus/regressions/$name")
+    log=$runs/$1.fuzz-$name.txt
+    # A failed check traps; the subshell's own "Illegal instruction" note goes to the log with the rest (the trailing
+    # exit keeps bash from exec-ing the last command, which would leave the note to this script's stderr).
+    (cd "$src" && timeout 600 "$build/fuzz/${name}_fuzzer" -runs=0 "${inputs[@]}"; exit $?) >"$log" 2>&1 ||
+      failed_fuzz+=${failed_fuzz:+ }fuzz:$name
   done
-}
-
-# run_checks LABEL [SCENE FLAGS]: the properties, both replayers and, given a scene, `raster compare` of the
-# planted build; then reads them (read_properties, read_fuzz, read_compare).
-run_checks() {
-  local label=$1
-  properties_process "$label"
-  fuzz_process "$label" raster
-  fuzz_process "$label" differential
-  if (($# == 3)); then compare_process "$build/raster" "$label" "$2" "$3"; fi
-  read_properties "$label"
-  read_fuzz "$label"
-  if (($# == 3)); then read_compare "$label"; fi
 }
 
 # --- Running compare ---
 
-# compare_process BINARY NAME SCENE FLAGS: runs `BINARY compare` in the scratch source tree with --json
-# $runs/NAME.json (its output in $runs/NAME.txt, its exit code in $runs/NAME.rc).
-compare_process() {
-  local binary=$1 name=$2 scene=$3 flags=() rc=0
+# run_compare BINARY NAME SCENE FLAGS: runs `BINARY compare` in the scratch source tree with --json
+# $runs/NAME.json; sets rc, genuine_total and caught_by (the nonzero genuine classes, largest first).
+run_compare() {
+  local binary=$1 name=$2 scene=$3 flags=() json=$runs/$2.json
   read -r -a flags <<<"$4"
-  rm -f "$runs/$name.json"
-  (cd "$src" && timeout 900 "$binary" compare "$scene" "${flags[@]}" --json "$runs/$name.json" >"$runs/$name.txt" 2>&1) ||
-    rc=$?
-  echo "$rc" >"$runs/$name.rc"
-}
-
-# read_compare NAME: sets rc, genuine_total and caught_by (the nonzero genuine classes, largest first).
-read_compare() {
-  local json=$runs/$1.json
-  rc=$(cat "$runs/$1.rc")
+  rm -f "$json"
+  rc=0
+  (cd "$src" && timeout 900 "$binary" compare "$scene" "${flags[@]}" --json "$json" >"$runs/$name.txt" 2>&1) || rc=$?
   genuine_total="" caught_by=""
   [[ -f $json ]] || return 0
   genuine_total=$(sed -n -E 's/^  "genuine_total": ([0-9]+),?$/\1/p' "$json")
@@ -373,8 +338,7 @@ unclean=()
 for name in "${selected[@]}"; do
   run_key=$(describe "$name")
   [[ -z ${correct_rc[$run_key]:-} ]] || continue
-  compare_process "$scratch/raster-correct" "correct-$name" "${entry[$name.scene]}" "${entry[$name.flags]}"
-  read_compare "correct-$name"
+  run_compare "$scratch/raster-correct" "correct-$name" "${entry[$name.scene]}" "${entry[$name.flags]}"
   correct_rc[$run_key]=$rc
   if [[ $rc -eq 0 ]]; then echo "plant_bugs: correct raster clean on $run_key" >&2
   else
@@ -385,7 +349,8 @@ for name in "${selected[@]}"; do
 done
 
 # The correct build on the properties and fuzz invariants: both must pass, or their catches mean nothing.
-run_checks correct
+run_properties correct
+run_fuzz correct
 grep -q '^\[  PASSED  \]' "$runs/correct.properties.txt" && ! grep -q '^\[  FAILED  \]' "$runs/correct.properties.txt" ||
   failed_properties=${failed_properties:-"(see the log)"}
 [[ -z $failed_properties ]] || { echo "plant_bugs: the CORRECT build fails properties: $failed_properties" \
@@ -424,7 +389,11 @@ for name in "${selected[@]}"; do
     rows+=("| $name | ${entry[$name.family]} | $(describe "$name") | does not build | - | - |")
   else
     check_start=$(date +%s)
-    run_checks "$name" "${entry[$name.scene]}" "${entry[$name.flags]}"
+    # One after another: run at once, the checks took 66 s on 7 entries against 54 s, since the properties'
+    # two-thread backends and compare's threads already keep both cores busy.
+    run_compare "$build/raster" "$name" "${entry[$name.scene]}" "${entry[$name.flags]}"
+    run_properties "$name"
+    run_fuzz "$name"
     check_seconds=$(($(date +%s) - check_start))
     oracle_caught=0 by=()
     if [[ $rc -eq 1 && ${genuine_total:-0} -gt 0 ]]; then
