@@ -10,6 +10,7 @@
 
 #include "raster/core/errors.h"
 #include "raster/formats/mesh_obj.h"
+#include "raster/formats/mesh_obj_reader.h"
 
 namespace {
 
@@ -185,6 +186,16 @@ TEST(ObjLoader, resolvesNegativeIndicesRelativeToPrecedingVertices) {
     ASSERT_EQ(normals.normals.size(), 3u);
     expect_vec3(normals.normals.at(normals.triangles.at(0).v[0]), 0, 0, 1);
     expect_vec3(normals.normals.at(normals.triangles.at(0).v[2]), 1, 0, 0);
+}
+
+TEST(ObjLoader, resolvesNegativeTextureIndicesRelativeToPrecedingCoordinates) {
+    // -1 is the last texture coordinate defined so far, as for positions.
+    const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/-3 2/-2 3/-1\n"
+                             "vt 0.5 0.5\nf 1/-1 2/-4 3/-2\n";
+    const raster::obj::ObjStatements statements = raster::obj::read_obj_statements(text, "model.obj");
+    ASSERT_EQ(statements.corners.size(), 6u);
+    const uint32_t expected[6] = {0, 1, 2, 3, 0, 2};
+    for (size_t i = 0; i < 6; ++i) EXPECT_EQ(statements.corners[i].texcoord, expected[i]) << "corner " << i;
 }
 
 TEST(ObjLoader, triangulatesAPolygonAtTheLimit) {
