@@ -38,6 +38,9 @@ void register_compare_flags(CLI::App& app, CompareFlags& flags) {
         "whose samples all agree has its colour, as read back from each file, checked against the oracle's bounds\n"
         "(genuine: colour), and every pixel of the depth files against the depth image's definition over raster's\n"
         "samples (genuine: depth image). A seed 000 shading-depth config writes its depth image only.\n"
+        "Precision modes beyond the oracle's bounds leave classes unjudged (counted, not failed): visibility under\n"
+        "--edges float, --clipping guard-band and --depth-format float|fixed24; barycentrics, depth and colour\n"
+        "under --interpolation affine. The summary, the JSON (\"unjudged\") and the report name them.\n"
         "The settings flags are render's. Exit code 0 when genuine_total is 0, 1 when not, 2 on bad input, 3 when an\n"
         "output cannot be written or Embree fails.\n"
         "Example: raster compare corpus/scenes/teapot.yaml --samples 16 --json teapot.json --diff teapot-diff.png");

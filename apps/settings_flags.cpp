@@ -21,14 +21,20 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
         ->check(CLI::IsMember({"nearest", "bilinear", "trilinear", "anisotropic"}));
     command.add_option("--snap-bits", flags.snap_bits, "Sub-pixel bits for vertex snapping, 1..16 (default 8)");
     command.add_option("--cull", flags.cull, "Back-face culling: none or back")->check(CLI::IsMember({"none", "back"}));
-    command.add_option("--edges", flags.edges, "Edge arithmetic: fixed (64-bit, watertight; default) or float")
+    command.add_option("--edges", flags.edges,
+                       "Edge arithmetic: fixed (64-bit, watertight; default) or float (compare leaves its visibility "
+                       "unjudged)")
         ->check(CLI::IsMember({"fixed", "float"}));
-    command.add_option("--interpolation", flags.interpolation, "perspective (default) or affine")
+    command.add_option("--interpolation", flags.interpolation,
+                       "perspective (default) or affine (compare leaves its barycentrics, depth and colour unjudged)")
         ->check(CLI::IsMember({"perspective", "affine"}));
     command.add_option("--depth-format", flags.depth_format,
-                       "Depth test on reversed-z float (default), float z/w, or fixed24 (24-bit z/w)")
+                       "Depth test on reversed-z float (default), float z/w, or fixed24 (24-bit z/w; compare leaves the "
+                       "visibility of float and fixed24 unjudged)")
         ->check(CLI::IsMember({"reversed-z", "float", "fixed24"}));
-    command.add_option("--clipping", flags.clipping, "full (default) or guard-band (side planes only beyond 4x the view)")
+    command.add_option("--clipping", flags.clipping,
+                       "full (default) or guard-band (side planes only beyond 4x the view; compare leaves its "
+                       "visibility unjudged)")
         ->check(CLI::IsMember({"full", "guard-band"}));
     command.add_option("--hierarchical-z", flags.hierarchical_z,
                        "Hierarchical-Z occlusion culling: on (default) or off; never changes a pixel")

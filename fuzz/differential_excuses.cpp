@@ -1,8 +1,9 @@
 // The differential corpus's excuse accounting: every input of the given folders through the differential target's
 // cases and comparison, summed; prints how many cases each precision mode had and, per class, how many samples the
 // precision model excused and what fraction of the compared samples that is: over all cases, and over those with
-// ordinary and with extreme coordinates apart. Exit 0 when no input has a genuine disagreement of a class its mode lets the oracle judge, 1
-// otherwise, 2 on bad usage.
+// ordinary and with extreme coordinates apart; and every excuse class summed over the cases against the fuzz corpus's
+// cap. Exit 0 when no input has a genuine disagreement of a class its mode lets the oracle judge and every class is
+// within its cap, 1 otherwise, 2 on bad usage.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 
 #include "fuzz/differential_scene.h"
 #include "harness/comparison/comparison_output.h"
+#include "harness/comparison/excuse_account.h"
 
 namespace {
 
@@ -66,6 +68,7 @@ int main(int argc, char** argv) {
     // All cases, and apart those with ordinary and with extreme coordinates: extremes excuse more, and the split
     // shows how much.
     Tally all, ordinary, extreme;
+    raster::harness::ExcuseAccount account;  // every case summed, against the fuzz corpus's caps
     uint64_t genuine_inputs = 0;
     std::map<std::string, uint64_t> by_modes;
     for (const fs::path& path : inputs) {
@@ -78,9 +81,10 @@ int main(int argc, char** argv) {
         options.threads = 1;
         const raster::harness::Comparison comparison = raster::harness::compare_scene(input->scene, options);
         ++by_modes[input->modes];
+        account.add(raster::harness::account_excuses(comparison, raster::harness::kFuzzCorpusCaps));
         all.add(comparison);
         (input->extreme ? extreme : ordinary).add(comparison);
-        if (raster::fuzz::judged_genuine(comparison, input->judged) > 0) {
+        if (comparison.genuine_total() > 0) {
             ++genuine_inputs;
             std::printf("GENUINE in %s (modes %s): %s\n", path.c_str(), input->modes,
                         raster::harness::genuine_reasons(comparison).c_str());
@@ -92,6 +96,11 @@ int main(int argc, char** argv) {
     print_excuses("all compared", all);
     print_excuses("ordinary coordinates", ordinary);
     print_excuses("extreme coordinates", extreme);
+    std::printf("excuses against the fuzz corpus's caps (excuse_account.h):\n");
+    for (const raster::harness::ExcuseLine& line : account.lines)
+        std::printf("  %-20s %-7s %10llu of %12llu  %.4f%%  cap %.4f%%%s\n", line.name.c_str(), line.unit.c_str(),
+                    static_cast<unsigned long long>(line.count), static_cast<unsigned long long>(line.of),
+                    100.0 * line.share(), 100.0 * line.cap, line.within() ? "" : "  OVER");
     std::printf("genuine: %llu inputs\n", static_cast<unsigned long long>(genuine_inputs));
-    return genuine_inputs == 0 ? 0 : 1;
+    return genuine_inputs == 0 && account.within() ? 0 : 1;
 }

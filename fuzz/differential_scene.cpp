@@ -31,24 +31,17 @@ constexpr int kMaxExtremeVertices = 3;
 // fraction that `differential_excuses` reports.
 constexpr double kMaxExtremeRadius = 1.0;
 
-// A precision mode and what the oracle's precision model (oracle/reference/precision.h) bounds in it.
+// A precision mode drawn, by name.
 struct ModeVariant {
     const char* name;
     PrecisionModes modes;
-    JudgedClasses judged;
 };
 
-// The modes drawn, the defaults first (what an exhausted input, or one saved before modes were drawn, gets):
-//  - the defaults, and hierarchical Z off (it never changes a pixel): everything is judged;
-//  - affine interpolation: visibility (the depth test's key is z/w, which interpolation leaves alone), not the
-//    barycentrics, depth and colour, which the oracle interpolates perspective-correctly by definition;
-//  - float z and fixed24 depth: the barycentrics, depth and colour of agreeing samples (interpolation ignores the
-//    depth format), not visibility: their keys tie over steps of about 2^-24 in z/w (fixed24 everywhere, float z
-//    toward the far plane), far coarser than the float reversed-Z tie bound (precision.h, section 5).
-// Left out, because the oracle cannot bound them: float edges (raster's float edge values are off by up to 2^-19 M^2
-// at coordinates M on the fixed-point grid, so edges move by far more than the oracle's radius, and shared edges
-// crack or double by design) and the guard band (raster snaps unclipped vertices beyond the viewport, whose float
-// error the radius, measured at the oracle's vertices clipped to the viewport, does not bound).
+// The modes drawn, the defaults first (what an exhausted input, or one saved before modes were drawn, gets): the
+// defaults, hierarchical Z off (it never changes a pixel), affine interpolation, float z and fixed24 depth. What the
+// oracle judges in each is harness::judged_classes's rule, the one `raster compare` follows. Float edges and the
+// guard band are not drawn: they leave visibility unjudged, and the only other check they would get is the
+// interpolation of agreeing samples, which the default modes already exercise.
 constexpr PrecisionModes kDefaults{};
 constexpr PrecisionModes with_hierarchical_z_off() {
     PrecisionModes modes;
@@ -66,11 +59,11 @@ constexpr PrecisionModes with_depth(DepthFormat depth) {
     return modes;
 }
 constexpr ModeVariant kModeVariants[] = {
-    {"default", kDefaults, {true, true}},
-    {"hierarchical z off", with_hierarchical_z_off(), {true, true}},
-    {"affine", with_interpolation(Interpolation::affine), {true, false}},
-    {"depth float", with_depth(DepthFormat::float_z), {false, true}},
-    {"depth fixed24", with_depth(DepthFormat::fixed24), {false, true}},
+    {"default", kDefaults},
+    {"hierarchical z off", with_hierarchical_z_off()},
+    {"affine", with_interpolation(Interpolation::affine)},
+    {"depth float", with_depth(DepthFormat::float_z)},
+    {"depth fixed24", with_depth(DepthFormat::fixed24)},
 };
 
 // Up to kMaxExtremeVertices vertices replaced by positions from raw float bits or the table of extremes, and the
@@ -119,7 +112,6 @@ std::optional<DifferentialCase> differential_case(const uint8_t* data, size_t si
     // Drawn last, so that an input that runs out first keeps the defaults.
     const ModeVariant& variant = input.PickValueInArray(kModeVariants);
     scene.settings.modes = variant.modes;
-    result.judged = variant.judged;
     result.modes = variant.name;
     result.extreme = draw_extremes(input, scene);
     const RenderSettings& settings = scene.settings;
@@ -140,17 +132,6 @@ std::optional<DifferentialCase> differential_case(const uint8_t* data, size_t si
     if (std::isfinite(magnification) && magnification > kMaxMagnification) return std::nullopt;
     if (result.extreme && !bounds_say_something(scene)) return std::nullopt;
     return result;
-}
-
-uint64_t judged_genuine(const harness::Comparison& comparison, const JudgedClasses& judged) {
-    const oracle::ComparisonCounts& counts = comparison.visibility.counts;
-    uint64_t total = 0;
-    if (judged.visibility) total += counts.count(oracle::SampleClass::visibility);
-    if (judged.interpolation)
-        total += counts.count(oracle::SampleClass::barycentrics) + counts.count(oracle::SampleClass::depth) +
-                 comparison.colour.genuine_pixels;
-    // The depth image is judged over raster's own samples, exactly, whatever the precision modes.
-    return total + comparison.depth.genuine_pixels;
 }
 
 }  // namespace raster::fuzz

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "harness/comparison/decoded_image.h"
+#include "harness/comparison/excuse_account.h"
 #include "oracle/compare/diff_map.h"
 
 namespace raster::harness {
@@ -40,6 +41,26 @@ nlohmann::json depth_disagreements_json(const oracle::DepthImageCheck& check, co
     for (const oracle::DepthImageCheck::Disagreement& d : check.first)
         list.push_back({{"x", d.x}, {"y", d.y}, {"file", format}, {"raster", d.file}, {"allowed", {d.lo, d.hi}}});
     return list;
+}
+
+nlohmann::json excuses_json(const ExcuseAccount& account) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const ExcuseLine& line : account.lines)
+        list.push_back({{"class", line.name},
+                        {"unit", line.unit},
+                        {"count", line.count},
+                        {"of", line.of},
+                        {"share", line.share()},
+                        {"cap", line.cap},
+                        {"within", line.within()}});
+    return list;
+}
+
+nlohmann::json interval_widths_json(const oracle::IntervalWidths& widths) {
+    nlohmann::json bins = nlohmann::json::array();
+    for (int b = 0; b < oracle::kIntervalWidthBins; ++b)
+        bins.push_back({{"levels", oracle::IntervalWidths::label(b)}, {"pixels", widths.pixels[b]}});
+    return {{"bins", bins}, {"widest", widths.widest}, {"wide_above", oracle::kWideIntervalLevels}};
 }
 
 }  // namespace
@@ -82,6 +103,7 @@ nlohmann::json comparison_json(const Comparison& c) {
               {"transparency", c.transparency.genuine_pixels},
               {"depth_image", c.depth.genuine_pixels}}},
             {"genuine_total", c.genuine_total()},
+            {"unjudged", c.judged.unjudged},
             {"shadows",
              {{"edge", c.shadows.edge_pixels},
               {"depth", c.shadows.depth_pixels},
@@ -90,9 +112,12 @@ nlohmann::json comparison_json(const Comparison& c) {
              {{"edge", c.transparency.edge_pixels},
               {"depth", c.transparency.depth_pixels},
               {"order", c.transparency.order_pixels}}},
+            {"excuses", excuses_json(account_excuses(c))},
+            {"interval_widths", interval_widths_json(c.colour.png.widths)},
             {"pixels",
              {{"judged", c.colour.png.judged},
               {"ambiguous", c.colour.png.ambiguous},
+              {"wide_interval", c.colour.png.wide},
               {"color_png", c.colour.png.genuine},
               {"color_ppm", c.colour.ppm.genuine},
               {"depth_png", c.depth.png.genuine},
@@ -150,6 +175,22 @@ std::string comparison_summary(const Comparison& c) {
                       static_cast<ull>(c.depth.png.genuine), static_cast<ull>(c.depth.ppm.genuine));
         out += text;
     }
+    if (c.colour.written) {
+        std::string bins;
+        for (int b = 0; b < oracle::kIntervalWidthBins; ++b)
+            bins += std::string(b ? ", " : "") + oracle::IntervalWidths::label(b) + ": " +
+                    std::to_string(c.colour.png.widths.pixels[b]);
+        out += "  interval widths    " + bins + " (pixels by levels; widest " +
+               std::to_string(c.colour.png.widths.widest) + ", " + std::to_string(c.colour.png.wide) + " wider than " +
+               std::to_string(oracle::kWideIntervalLevels) + " counted ambiguous)\n";
+    }
+    const std::string over = account_excuses(c).violations();
+    if (over.empty()) out += "  excuses            every class within its cap\n";
+    for (size_t at = 0, end; at < over.size(); at = end + 1) {
+        end = over.find('\n', at);
+        out += "  over its cap       " + over.substr(at, end - at) + "\n";
+    }
+    for (const std::string& reason : c.judged.unjudged) out += "  unjudged           " + reason + "\n";
     std::snprintf(text, sizeof text,
                   "  genuine total      %llu\n"
                   "  raster %.1f ms (writing %.1f ms), oracle %.1f ms, compare %.1f ms\n",
@@ -162,11 +203,14 @@ std::string genuine_reasons(const Comparison& c) {
     auto add = [&](const char* reason, uint64_t count) {
         if (count) text += std::string(text.empty() ? "" : ", ") + reason + " " + std::to_string(count);
     };
-    for (oracle::SampleClass k : {oracle::SampleClass::visibility, oracle::SampleClass::barycentrics, oracle::SampleClass::depth})
-        add(oracle::to_string(k), c.visibility.counts.count(k));
-    add("color", plain_colour_pixels(c));
-    add("shadow", c.shadows.genuine_pixels);
-    add("transparency", c.transparency.genuine_pixels);
+    if (c.judged.visibility) add("visibility", c.visibility.counts.count(oracle::SampleClass::visibility));
+    if (c.judged.interpolation) {
+        for (oracle::SampleClass k : {oracle::SampleClass::barycentrics, oracle::SampleClass::depth})
+            add(oracle::to_string(k), c.visibility.counts.count(k));
+        add("color", plain_colour_pixels(c));
+        add("shadow", c.shadows.genuine_pixels);
+        add("transparency", c.transparency.genuine_pixels);
+    }
     add("depth image", c.depth.genuine_pixels);
     return text.empty() ? "-" : text;
 }

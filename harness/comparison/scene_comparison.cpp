@@ -261,6 +261,7 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options) {
     out.height = scene.settings.height;
     out.samples = scene.settings.samples;
     out.mode = options.mode;
+    out.judged = judged_classes(scene.settings.modes);
 
     const ScratchFolder folder;
     const JudgedFiles files = render_raster(scene, options, folder.path(), out);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "harness/comparison/judged_classes.h"
 #include "oracle/compare/colour_check.h"
 #include "oracle/compare/depth_image_check.h"
 #include "oracle/compare/sample_classifier.h"
@@ -80,13 +81,26 @@ struct Comparison {
     ShadowVerdicts shadows;
     TransparencyVerdicts transparency;
     DepthVerdicts depth;
+    JudgedClasses judged;  // what the frame's precision modes let the oracle judge
     double raster_ms = 0;   // raster's in-process frame time (RenderStats::ms_total)
     double write_ms = 0;    // the job's encoding and writing
     double oracle_ms = 0;   // the oracle: geometry, BVH build, one ray per sample, shading and resolve
     double compare_ms = 0;  // reading the files back, reference geometry, classification, colour bounds and checks
 
-    // Genuine samples plus pixels of genuine colour or depth: 0 means raster agrees with the oracle.
+    // Genuine samples plus pixels of genuine colour or depth, of the classes the precision modes let the oracle
+    // judge: 0 means raster agrees with the oracle. The depth image is judged over raster's own samples, exactly,
+    // whatever the modes.
     uint64_t genuine_total() const {
+        using oracle::SampleClass;
+        uint64_t total = depth.genuine_pixels;
+        if (judged.visibility) total += visibility.counts.count(SampleClass::visibility);
+        if (judged.interpolation)
+            total += visibility.counts.count(SampleClass::barycentrics) + visibility.counts.count(SampleClass::depth) +
+                     colour.genuine_pixels;
+        return total;
+    }
+    // Every disagreement, judged or not (what the trade-off table measures a mode's accuracy by).
+    uint64_t disagreements_total() const {
         return visibility.counts.genuine_total() + colour.genuine_pixels + depth.genuine_pixels;
     }
 };

@@ -226,7 +226,7 @@ SceneTradeoff measure_scene(const Scene& scene, const std::vector<const Tradeoff
         {
             Comparison comparison = compare_scene(work, compare_options);
             result.samples = uint64_t(comparison.width) * uint64_t(comparison.height) * uint64_t(comparison.samples);
-            result.genuine = comparison.genuine_total();
+            result.genuine = comparison.disagreements_total();
             result.ambiguous = comparison.visibility.counts.ambiguous_total();
             result.color_rmse = color_rmse(comparison.raster.image, reference);
             images[i] = std::move(comparison.raster.image.pixels);

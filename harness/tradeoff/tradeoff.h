@@ -35,7 +35,7 @@ struct ModeResult {
     std::vector<double> times_ms;  // each timed frame
     double median_ms = 0;
     uint64_t samples = 0;                 // width * height * samples per pixel: what genuine and ambiguous count
-    uint64_t genuine = 0, ambiguous = 0;  // compare_scene's totals for the scene in this mode
+    uint64_t genuine = 0, ambiguous = 0;  // compare_scene's totals for the scene in this mode (genuine: judged or not)
     double color_rmse = 0;                // 0-255, RGB, every pixel, against the reference oracle image
     double coverage_error = 0;            // see coverage_error()
     bool timed_image_matches = true;      // the timed frame's image is the compared one, byte for byte

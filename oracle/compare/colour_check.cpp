@@ -97,6 +97,18 @@ PixelBounds pixel_bounds(const ColourInputs& in) {
     return out;
 }
 
+int IntervalWidths::bin(int width) {
+    int bin = 0;
+    while (bin + 1 < kIntervalWidthBins && width >= (1 << bin)) ++bin;
+    return bin;
+}
+
+const char* IntervalWidths::label(int bin) {
+    static const char* const kLabels[kIntervalWidthBins] = {"0",     "1",     "2-3",    "4-7",    "8-15",
+                                                            "16-31", "32-63", "64-127", "128-255"};
+    return bin >= 0 && bin < kIntervalWidthBins ? kLabels[bin] : "?";
+}
+
 ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, const OracleImage& oracle) {
     if (oracle.width != bounds.width || oracle.height != bounds.height || oracle.channels != bounds.channels)
         throw std::invalid_argument("check_colours: the oracle's image and the bounds have different sizes");
@@ -116,13 +128,23 @@ ColourCheck check_colours(const PixelBounds& bounds, const RasterPixels& image, 
             const size_t pixel = static_cast<size_t>(y) * bounds.width + x;
             if (bounds.state[pixel] == PixelState::ambiguous) ++out.ambiguous;
             if (bounds.state[pixel] != PixelState::judged) continue;
-            ++out.judged;
+            int width = 0;
+            for (int c = 0; c < bounds.channels; ++c) {
+                const ByteRange& range = bounds.ranges[pixel * bounds.channels + c];
+                width = std::max(width, range.hi - range.lo);
+            }
+            ++out.widths.pixels[IntervalWidths::bin(width)];
+            out.widths.widest = std::max(out.widths.widest, width);
+            const bool wide = width > kWideIntervalLevels;
+            ++(wide ? out.ambiguous : out.judged);
+            out.wide += wide;
             const uint8_t* shown = image.at(x, y);
             bool inside = true;
             for (int c = 0; c < channels; ++c) {
                 const size_t at = pixel * bounds.channels + c;
                 inside = inside && bounds.ranges[at].contains(shown[c]);
-                out.max_difference = std::max(out.max_difference, std::abs(int(shown[c]) - int(oracle.pixels[at])));
+                const int difference = std::abs(int(shown[c]) - int(oracle.pixels[at]));
+                if (!wide) out.max_difference = std::max(out.max_difference, difference);
             }
             if (inside) continue;
             ++out.genuine;

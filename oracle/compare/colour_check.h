@@ -65,8 +65,26 @@ struct ColourDisagreement {
 };
 inline constexpr size_t kListedColourDisagreements = 200;
 
+// How wide the colour intervals of the judged pixels are: per pixel the widest channel's hi - lo, counted in bins
+// 0, 1, 2-3, 4-7, ..., 128-255 levels. The oracle judges a pixel only as sharply as its interval: a wide one excuses
+// much, so it is counted, shown, and capped.
+inline constexpr int kIntervalWidthBins = 9;
+struct IntervalWidths {
+    std::array<uint64_t, kIntervalWidthBins> pixels{};
+    int widest = 0;
+    static int bin(int width);         // 0 -> 0, 1 -> 1, 2..3 -> 2, ..., 128..255 -> 8
+    static const char* label(int bin);  // "0", "1", "2-3", ..., "128-255"
+};
+// A pixel whose interval is wider than this many levels (an eighth of the range) is counted as ambiguous, not
+// judged: its bytes are still checked against the interval (a byte outside it is genuine), but it tells too little
+// to count as agreement. Correct frames meet such intervals where the oracle's tolerance meets a steep colour:
+// texture minification near a horizon, a shadow's edge inside the filter footprint.
+inline constexpr int kWideIntervalLevels = 32;
+
 struct ColourCheck {
-    uint64_t judged = 0, ambiguous = 0, genuine = 0;  // pixels
+    uint64_t judged = 0, ambiguous = 0, genuine = 0;  // pixels (ambiguous: by their samples, or a wide interval)
+    uint64_t wide = 0;                                // of the ambiguous: wider than kWideIntervalLevels
+    IntervalWidths widths;                            // over the pixels whose samples all agree
     uint64_t genuine_shadow = 0;                // of the genuine ones: inside the bounds once shadows are left open
     std::vector<uint8_t> shadow_pixels;         // per pixel: 1 where genuine and explained by a shadow test
     int max_difference = 0;                     // largest |raster - oracle| byte difference over judged pixels

@@ -29,6 +29,14 @@ inline constexpr int kLevelBlendRoundings = 4;
 //  by n: gamma_(n + 1) of the sum of the taps' magnitudes.
 inline constexpr int kTapCoordinateRoundings = 5;
 
+// THE BARYCENTRICS' SUM. raster's barycentrics sum to 1 up to its rounding: each float component is rounded once from
+// double (u |b_i|), and a clipped polygon's corner barycentrics come from float lerps, one per plane crossed (at most
+// six, each 3 roundings of the corner's components): gamma_32 of sum |b_i| bounds |sum b - 1| with room to spare.
+// The texture coordinates are then evaluated as uv_0 + b_1 (uv_1 - uv_0) + b_2 (uv_2 - uv_0) + (sum b - 1) uv_0,
+// which, unlike sum b_i uv_i over independent boxes, does not multiply each box by the coordinates' distance from
+// the texture's origin (a repeated texture far from it: thousands of texels).
+inline constexpr int kBarycentricSumRoundings = 32;
+
 // LEVEL OF DETAIL. raster's rho = |duv * size| in float: a product per component, two squares, a sum and a square
 // root: 5 roundings, relative; log2 in float adds one rounding of its result (glibc's log2f is within 1 ulp), and
 // the anisotropic ratio and quotient one rounding each.

@@ -61,6 +61,23 @@ OracleTextureSampling::OracleTextureSampling(const Scene& scene, const OracleSce
     }
 }
 
+namespace {
+
+// A coordinate over the barycentric box: sum b_i c_i over the independent boxes, and, when `relative`, c_0 +
+// b_1 (c_1 - c_0) + b_2 (c_2 - c_0) within the barycentrics' sum error of it (texture_precision.h, "the
+// barycentrics' sum"); both hold, so the narrower ends of the two are kept.
+Interval over_box(const Interval3& bary, double c0, double c1, double c2, bool relative_too) {
+    const Interval independent = bary.x * Interval(c0) + bary.y * Interval(c1) + bary.z * Interval(c2);
+    if (!relative_too) return independent;
+    const double sum_error =
+        float_gamma(kBarycentricSumRoundings) * (bary.x.magnitude() + bary.y.magnitude() + bary.z.magnitude());
+    const Interval relative =
+        (Interval(c0) + bary.y * Interval(c1 - c0) + bary.z * Interval(c2 - c0)).widened(sum_error * std::fabs(c0));
+    return {std::max(independent.lo, relative.lo), std::min(independent.hi, relative.hi)};
+}
+
+}  // namespace
+
 Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const Interval3& bary) const {
     const Triangle& t = triangles_[id];
     glm::dvec3 middle, half;
@@ -79,9 +96,14 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
     half += glm::abs(on_plane - middle);
     const GradientError gradient = gradient_error(t.error, on_plane, half);
     TextureFootprintBox box;
-    // u and v over the barycentric box, with raster's interpolation rounding (gamma_3 of sum |b_i| |uv_i|).
-    Interval u = bary.x * Interval(t.uv[0].x) + bary.y * Interval(t.uv[1].x) + bary.z * Interval(t.uv[2].x);
-    Interval v = bary.x * Interval(t.uv[0].y) + bary.y * Interval(t.uv[1].y) + bary.z * Interval(t.uv[2].y);
+    // u and v over the barycentric box, with raster's interpolation rounding (gamma_3 of sum |b_i| |uv_i|). Under
+    // anisotropic filtering the relative form is not used yet: on checker_floor's horizon it leaves raster one level
+    // outside the taps' interval on 705 pixels, a disagreement the wider box hides and that is still to be explained
+    // (the model's or raster's); docs/oracle.md, "The texture interval", says so.
+    const SamplerState sampler = sampler_of(*material.texture, filter_override_);
+    const bool relative_too = sampler.filter != TextureFilter::anisotropic;
+    const Interval u = over_box(bary, t.uv[0].x, t.uv[1].x, t.uv[2].x, relative_too);
+    const Interval v = over_box(bary, t.uv[0].y, t.uv[1].y, t.uv[2].y, relative_too);
     double magnitude_u = 0.0, magnitude_v = 0.0;
     glm::dvec2 error_dx(0.0), error_dy(0.0), magnitude_dx(0.0), magnitude_dy(0.0);
     for (int i = 0; i < 3; ++i) {
@@ -103,7 +125,7 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
     };
     if (!finite_box(box.d_dx) || !finite_box(box.d_dy))
         box.d_dx = box.d_dy = {Interval::everything(), Interval::everything()};
-    return filtered_over(textures_.of(*material.texture), sampler_of(*material.texture, filter_override_), box);
+    return filtered_over(textures_.of(*material.texture), sampler, box);
 }
 
 }  // namespace raster::oracle

@@ -168,6 +168,42 @@ std::string unique_file_stem(const std::string& name, std::set<std::string>& tak
     return stem;
 }
 
+namespace {
+
+// Each excuse class against its cap (the classes over it first, in bold), the colour intervals' widths, and what the
+// precision modes left unjudged.
+std::string excuse_rows(const nlohmann::json& c) {
+    std::string html, over, within;
+    for (const nlohmann::json& line : c.value("excuses", nlohmann::json::array())) {
+        const std::string text = escape_html(line.value("class", "")) + " " + number(line["count"]) + " " +
+                                 escape_html(line.value("unit", "")) + " (" + percent(line["share"]) + " of cap " +
+                                 percent(line["cap"]) + ")";
+        if (line.value("within", true)) {
+            if (line.value("count", 0) > 0) within += (within.empty() ? "" : ", ") + text;
+        } else {
+            over += "<b>" + text + " over its cap</b><br>";
+        }
+    }
+    if (c.contains("excuses"))
+        html += "<tr class=\"excuses\"><td>excuses</td><td>" + std::string(over.empty() ? "within caps" : "OVER CAP") +
+                "</td><td>" + over + (within.empty() ? "none used" : within) + "</td></tr>";
+    const nlohmann::json widths = c.value("interval_widths", nlohmann::json::object());
+    if (!widths.empty()) {
+        std::string bins;
+        for (const nlohmann::json& bin : widths.value("bins", nlohmann::json::array()))
+            bins += (bins.empty() ? "" : ", ") + escape_html(bin.value("levels", "")) + ": " + number(bin["pixels"]);
+        html += "<tr class=\"interval-widths\"><td>colour intervals</td><td>widest " + number(widths["widest"]) +
+                "</td><td>pixels by width in levels: " + bins + "; wider than " + number(widths["wide_above"]) +
+                " counted ambiguous</td></tr>";
+    }
+    for (const nlohmann::json& reason : c.value("unjudged", nlohmann::json::array()))
+        html += "<tr class=\"unjudged\"><td>unjudged</td><td></td><td>" + escape_html(reason.get<std::string>()) +
+                "</td></tr>";
+    return html;
+}
+
+}  // namespace
+
 std::string report_html(const std::vector<ReportRow>& rows, const std::optional<TradeoffLink>& tradeoff) {
     size_t with_genuine = 0;
     for (const ReportRow& row : rows) with_genuine += row.comparison.value("genuine_total", 0) > 0;
@@ -226,6 +262,7 @@ std::string report_html(const std::vector<ReportRow>& rows, const std::optional<
         html += "<tr><td>pixels</td><td>" + number(pixels.value("judged", nlohmann::json(0))) +
                 "</td><td>judged by colour; " + number(pixels.value("ambiguous", nlohmann::json(0))) +
                 " left to their samples' classes</td></tr>";
+        html += excuse_rows(c);
         html += "<tr><td>max colour difference</td><td>" + number(c["max_color_error"]) + "/255</td></tr>";
         html += "<tr><td>time</td><td colspan=\"2\">raster " + number(c["raster_ms"]) + " ms, oracle " +
                 number(c["oracle_ms"]) + " ms (" + escape_html(c.value("oracle_mode", "")) + ")</td></tr>";
