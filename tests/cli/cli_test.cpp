@@ -178,6 +178,20 @@ TEST(Cli, repeatRendersTheSameImageAndReportsTheFirstAndMedianFrames) {
     EXPECT_EQ(run_raster(ws, {"render", scene.string(), "--repeat", "0"}).status, 2);
 }
 
+// Every frame after the first reuses the last one's workspace (setups, bins, transparent setups, threads' scratch):
+// on a scene with shadows and transparent layers, where the most is reused, the last of three frames must still be
+// the bytes of a single frame.
+TEST(Cli, repeatedFramesOfAShadowedTransparentSceneAreASingleFramesBytes) {
+    Workspace ws;
+    const fs::path scene = fs::path(RASTER_SOURCE_DIR) / "corpus/scenes/shadows_and_glass.yaml";
+    const Result once = run_raster(ws, {"render", scene.string(), "-o", (ws.out() / "once.png").string()});
+    ASSERT_EQ(once.status, 0) << once.err;
+    const Result repeated =
+        run_raster(ws, {"render", scene.string(), "-o", (ws.out() / "repeated.png").string(), "--repeat", "3"});
+    ASSERT_EQ(repeated.status, 0) << repeated.err;
+    EXPECT_EQ(read_bytes(ws.out() / "repeated.png"), read_bytes(ws.out() / "once.png"));
+}
+
 TEST(Cli, missingSubcommandIsUsageError) {
     Workspace ws;
     const Result none = run_raster(ws, {});

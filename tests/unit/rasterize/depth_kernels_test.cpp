@@ -1,7 +1,7 @@
 // The depth kernel: a block row's depth test, the same on every Highway target the CPU runs and on the scalar
 // fallback, and equal to per_sample.h's DepthPlane and depth_test (the reference rasterizer's) applied one covered
 // sample at a time: keys, winners, ties, empty samples, NaN stored keys, fixed24 levels, keys beyond float's range,
-// the padding untouched.
+// the padding untouched; and a fixed24 key is the nearest 24-bit level.
 #include "raster/rasterize/depth_kernels.h"
 
 #include <cmath>
@@ -131,6 +131,26 @@ TEST(DepthKernels, everyTargetGivesPerSampleDepthTestsResultSampleBySample) {
                         << simd_target_name(target) << ", n = " << n << ", fixed24 " << fixed24;
                 }
             }
+}
+
+// A fixed24 key is the 24-bit level nearest the plane's value (a D24 buffer rounds, halves up), not the level below
+// it: on a flat plane, values a fraction of a level apart, with their levels written out.
+TEST(DepthPlane, aFixed24KeyIsTheNearestLevel) {
+    const struct {
+        double value;
+        float level;
+    } kCases[] = {{-1000.3, -1000.0f}, {-1000.5, -1000.0f},         {-1000.7, -1001.0f},
+                  {-0.2, 0.0f},        {-16777214.6, -16777215.0f}, {-16777215.0, -16777215.0f}};
+    for (const auto& c : kCases) {
+        TriangleSetup setup;
+        setup.area2 = 1024;
+        setup.depth_fixed24 = true;
+        for (double& key : setup.depth) key = c.value;
+        EXPECT_EQ(DepthPlane(setup).at(0, 0), c.level) << c.value;
+        EXPECT_EQ(DepthPlane(setup).at(512, -300), c.level) << c.value;
+        setup.depth_fixed24 = false;
+        EXPECT_EQ(DepthPlane(setup).at(0, 0), static_cast<float>(c.value)) << c.value;  // other formats: the value
+    }
 }
 
 }  // namespace
