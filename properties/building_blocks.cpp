@@ -5,6 +5,7 @@
 #include <string>
 
 #include "raster/compat/scene_loader.h"
+#include "raster/transform/model_matrix.h"
 
 namespace raster::properties {
 namespace {
@@ -39,7 +40,7 @@ std::string scene_file_with_chain(const ScaleRotateTranslate& chain, const std::
 
 glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain) {
     const std::string text = scene_file_with_chain(chain, {glm::vec3(0, 0, 0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0)});
-    return parse_scene(text, "model_matrix_from_scene_file.yaml").meshes.at(0).model;
+    return model_matrix(parse_scene(text, "model_matrix_from_scene_file.yaml").meshes.at(0).transform);
 }
 
 }  // namespace raster::properties

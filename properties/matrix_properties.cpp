@@ -253,7 +253,7 @@ RASTER_PROPERTY(NormalMatrix, keepsNormalsPerpendicularToSurfaces) {
     mesh.data.positions = {c.triangle[0], c.triangle[1], c.triangle[2]};
     mesh.data.normals = {normal, normal, normal};
     mesh.data.triangles = {{{0, 1, 2}}};
-    mesh.model = m;
+    mesh.transform.steps = {MatrixStep{m}};
     scene.meshes.push_back(mesh);
     const TransformedScene out = impl.stages.vertex(scene, vertex_stage_needs(ShadingMode::blinn_phong));
     const glm::dvec3 s = glm::abs(glm::dvec3(c.chain.scale)), t = glm::abs(glm::dvec3(c.chain.offset));

@@ -40,7 +40,8 @@ double snap_displacement(int snap_bits);
 //    its clip position is within gamma_12 (|P| |V| |M| |p|) of what its matrices give, componentwise; how far its
 //    float matrices are from the oracle's exact camera is camera_precision.h's bound, added to this one;
 inline constexpr int kRasterTransformRoundings = 12;
-//  - the oracle computes V (M p) in double from the scene's float M and p and rounds each view-space coordinate to
+//  - the oracle computes V (M p) in double from its own M (model_transform.h) and the scene's float p and rounds
+//    each view-space coordinate to
 //    float once for Embree: within u of it, plus double's own error (a few 1e-16, relative): gamma_2 of |V||M||p|
 //    (P only rescales x and y, so gamma_2 |P||V||M||p| bounds it in clip units as well);
 inline constexpr int kOracleTransformRoundings = 2;

@@ -133,13 +133,16 @@ ClipBound original_clip_vertex(const Scene& scene, const OracleScene& geometry, 
     const OracleTriangle& triangle = geometry.triangles[id];
     const uint32_t vertex = triangle.vertex[corner];
     const glm::dmat4& projection = geometry.camera.projection;
+    const ModelMatrixError& model = geometry.models[triangle.mesh];
     const glm::dmat4 magnitude_chain =
-        absolute(projection) * absolute(geometry.camera.view) * absolute(glm::dmat4(scene.meshes[triangle.mesh].model));
-    const glm::dvec4 p{glm::dvec3(scene.meshes[triangle.mesh].data.positions[vertex - geometry.mesh_first_vertex[triangle.mesh]]), 1.0};
+        absolute(projection) * absolute(geometry.camera.view) * raster_model_magnitude(model);
+    const glm::vec3& position = scene.meshes[triangle.mesh].data.positions[vertex - geometry.mesh_first_vertex[triangle.mesh]];
     ClipBound bound;
     bound.clip = projection * glm::dvec4(geometry.view[vertex], 1.0);
-    bound.magnitudes = magnitude_chain * glm::abs(p);
-    bound.error = vertex_error(bound.magnitudes) + camera_clip_error(geometry.camera_error, geometry.camera, geometry.world[vertex]);
+    bound.magnitudes = magnitude_chain * glm::abs(glm::dvec4(glm::dvec3(position), 1.0));
+    bound.error = vertex_error(bound.magnitudes) +
+                  camera_clip_error(geometry.camera_error, geometry.camera, geometry.world[vertex]) +
+                  model_clip_error(model, geometry.camera_error, geometry.camera, position);
     return bound;
 }
 
@@ -174,8 +177,7 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
 
     for (uint32_t id = 0; id < triangle_count; ++id) {
         const OracleTriangle& triangle = geometry.triangles[id];
-        const glm::dmat4 model(scene.meshes[triangle.mesh].model);
-        const glm::dmat4 view_magnitude_chain = view_magnitude * absolute(model);
+        const glm::dmat4 view_magnitude_chain = view_magnitude * absolute(geometry.models[triangle.mesh].exact);
         const auto& positions = scene.meshes[triangle.mesh].data.positions;
         const uint32_t first_vertex = geometry.mesh_first_vertex[triangle.mesh];
         std::vector<ClipVertex> polygon(3);

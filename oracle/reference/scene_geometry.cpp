@@ -21,14 +21,14 @@ bool needs_normals(ShadingMode mode) {
 }
 
 // The vertex normals of one mesh and raster's error bounds for them.
-void mesh_normals(const SceneMesh& mesh, uint32_t first, OracleScene& out) {
+void mesh_normals(const SceneMesh& mesh, const ModelMatrixError& model, uint32_t first, OracleScene& out) {
     const MeshData& data = mesh.data;
     const size_t count = data.positions.size();
     if (data.normals.size() == count) {
-        const glm::dmat3 to_world = glm::transpose(glm::inverse(glm::dmat3{glm::mat3(mesh.model)}));
+        const glm::dmat3 to_world = glm::transpose(glm::inverse(glm::dmat3(model.exact)));
         for (size_t i = 0; i < count; ++i) {
             out.normal[first + i] = unit_or_zero(to_world * glm::dvec3(data.normals[i]));
-            out.normal_error[first + i] = raster_file_normal_error(mesh.model, data.normals[i]);
+            out.normal_error[first + i] = raster_file_normal_error(model, data.normals[i]);
         }
         return;
     }
@@ -69,12 +69,12 @@ OracleScene view_of_scene(const Scene& scene, const Camera& camera, int width, i
         const SceneMesh& mesh = scene.meshes[m];
         const uint32_t first = static_cast<uint32_t>(out.world.size());
         out.mesh_first_vertex.push_back(first);
-        const glm::dmat4 model(mesh.model);
+        const ModelMatrixError& model = out.models.emplace_back(raster_model_error(mesh.transform));
         for (const glm::vec3& p : mesh.data.positions) {
-            const glm::dvec3 world(model * glm::dvec4(glm::dvec3(p), 1.0));
+            const glm::dvec3 world(model.exact * glm::dvec4(glm::dvec3(p), 1.0));
             out.world.push_back(world);
             out.view.push_back(view_of_world(out.camera, world));
-            if (world_errors) out.world_error.push_back(raster_world_position_error(mesh.model, p));
+            if (world_errors) out.world_error.push_back(raster_world_position_error(model, p));
         }
         for (uint32_t t = 0; t < mesh.data.triangles.size(); ++t) {
             const auto& v = mesh.data.triangles[t].v;
@@ -96,7 +96,8 @@ OracleScene oracle_scene(const Scene& scene) {
     if (needs_normals(mode)) {
         out.normal.assign(out.world.size(), glm::dvec3(0.0));
         out.normal_error.assign(out.world.size(), 0.0);
-        for (uint32_t m = 0; m < scene.meshes.size(); ++m) mesh_normals(scene.meshes[m], out.mesh_first_vertex[m], out);
+        for (uint32_t m = 0; m < scene.meshes.size(); ++m)
+            mesh_normals(scene.meshes[m], out.models[m], out.mesh_first_vertex[m], out);
     }
     return out;
 }

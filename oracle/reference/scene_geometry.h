@@ -11,6 +11,7 @@
 
 #include "oracle/reference/camera.h"
 #include "oracle/reference/camera_precision.h"
+#include "oracle/reference/model_precision.h"
 #include "raster/scene/scene.h"
 
 namespace raster::oracle {
@@ -24,6 +25,7 @@ struct OracleTriangle {
 struct OracleScene {
     OracleCamera camera;
     CameraMatrixError camera_error;      // raster's float camera matrices against `camera`
+    std::vector<ModelMatrixError> models;  // per mesh: the oracle's model matrix and raster's error against it
     std::vector<OracleTriangle> triangles;
     std::vector<uint32_t> mesh_first_vertex;
     std::vector<glm::dvec3> world;       // per vertex: model * position

@@ -1,6 +1,7 @@
 // The shading error bounds; the derivations are next to the declarations in shading_precision.h.
 #include "oracle/reference/shading_precision.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/common.hpp>
@@ -26,43 +27,66 @@ double unit_vector_error(double change, double length) {
 
 }  // namespace
 
-glm::dvec3 raster_world_position_error(const glm::mat4& model, const glm::vec3& position) {
+glm::dvec3 raster_world_position_error(const ModelMatrixError& model, const glm::vec3& position) {
+    const glm::dmat4 magnitude = raster_model_magnitude(model);
+    const glm::dvec4 p = glm::abs(glm::dvec4(glm::dvec3(position), 1.0));
     glm::dvec3 error(0.0);
     for (int row = 0; row < 3; ++row) {
-        double magnitude = std::fabs(double(model[3][row]));
-        for (int k = 0; k < 3; ++k) magnitude += std::fabs(double(model[k][row]) * double(position[k]));
-        error[row] = float_gamma(kWorldPositionRoundings) * magnitude;
+        double rounding = 0.0, input = 0.0;
+        for (int k = 0; k < 4; ++k)
+            if (p[k] > 0.0) {  // a zero coordinate adds an exact zero, however uncertain its column
+                rounding += magnitude[k][row] * p[k];
+                input += model.bound[k][row] * p[k];
+            }
+        error[row] = float_gamma(kWorldPositionRoundings) * rounding + input;
     }
     return error;
 }
 
-double raster_file_normal_error(const glm::mat4& model, const glm::vec3& normal) {
-    const glm::dmat3 m{glm::mat3(model)};
+double raster_file_normal_error(const ModelMatrixError& model, const glm::vec3& normal) {
+    const glm::dmat3 m(model.exact), bound(model.bound);
+    glm::dmat3 magnitude;  // |M_f|, the upper 3 x 3
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) magnitude[c][r] = std::fabs(m[c][r]) + bound[c][r];
+    const glm::dmat3 input = inverse_input_error(m, bound);  // inverse(M_f) against inverse(M), entrywise
+    if (!std::isfinite(input[0][0])) return 2.0;
     const double det = glm::determinant(m);
-    // |det| and D, the magnitude of its expansion along the first column.
-    double magnitude = 0.0;
+    double k = 0.0;  // ||inverse(M)| bound||_inf
+    {
+        const glm::dmat3 inverse = glm::inverse(m);
+        for (int r = 0; r < 3; ++r) {
+            double sum = 0.0;
+            for (int c = 0; c < 3; ++c)
+                for (int j = 0; j < 3; ++j) sum += std::fabs(inverse[j][r]) * bound[c][j];
+            k = std::max(k, sum);
+        }
+    }
+    const double det_floor = std::fabs(det) * std::pow(1.0 - std::min(k, 1.0), 3);
+    // D, the magnitude of the determinant's expansion along the first column, and each minor's magnitude.
+    double magnitude_d = 0.0;
     glm::dmat3 minor, minor_magnitude;  // minor[i][j] belongs to the inverse's entry (i, j) (glm: [column][row])
     for (int c = 0; c < 3; ++c)
         for (int r = 0; r < 3; ++r) {
             // The cofactor of m's entry (row c, column r), which is the inverse's entry (row r, column c) times det.
             const int r0 = (c + 1) % 3, r1 = (c + 2) % 3, c0 = (r + 1) % 3, c1 = (r + 2) % 3;
             minor[c][r] = m[c0][r0] * m[c1][r1] - m[c1][r0] * m[c0][r1];
-            minor_magnitude[c][r] = std::fabs(m[c0][r0] * m[c1][r1]) + std::fabs(m[c1][r0] * m[c0][r1]);
+            minor_magnitude[c][r] = magnitude[c0][r0] * magnitude[c1][r1] + magnitude[c1][r0] * magnitude[c0][r1];
         }
-    for (int r = 0; r < 3; ++r) magnitude += std::fabs(m[0][r] * minor[0][r]);
-    const double g_det = float_gamma(kDeterminantRoundings) * magnitude;
-    if (!(g_det < std::fabs(det))) return 2.0;
+    for (int r = 0; r < 3; ++r) magnitude_d += magnitude[0][r] * minor_magnitude[0][r];
+    const double g_det = float_gamma(kDeterminantRoundings) * magnitude_d;
+    if (!(g_det < det_floor)) return 2.0;
     // The normal matrix is the inverse's transpose; its entry (row i, column j) is minor[i][j] / det.
     glm::dvec3 exact(0.0), change(0.0);
     const glm::dvec3 n(normal);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             const double entry = minor[i][j] / det;
+            const double entry_f = std::fabs(entry) + input[i][j];  // raster's inverse of its own M_f, at most
             const double entry_error =
-                (float_gamma(kMinorRoundings) * minor_magnitude[i][j] + std::fabs(minor[i][j]) * g_det / std::fabs(det)) /
-                std::fabs(det);
+                (float_gamma(kMinorRoundings) * minor_magnitude[i][j] + entry_f * g_det) / (det_floor - g_det) +
+                input[i][j];
             exact[i] += entry * n[j];
-            change[i] += entry_error * std::fabs(n[j]) + float_gamma(3) * std::fabs(entry * n[j]);
+            change[i] += entry_error * std::fabs(n[j]) + float_gamma(3) * entry_f * std::fabs(n[j]);
         }
     return unit_vector_error(glm::length(change), glm::length(exact));
 }

@@ -9,25 +9,30 @@
 #include <glm/vec3.hpp>
 
 #include "oracle/reference/interval.h"
+#include "oracle/reference/model_precision.h"
 #include "raster/scene/mesh.h"
 
 namespace raster::oracle {
 
 // ATTRIBUTES, per vertex (norms are 2-norms, |.| componentwise):
-//  - world position float(M (p, 1)): four products and three sums per component, gamma_4 |M| |(p, 1)|;
+//  - world position float(M_f (p, 1)): four products and three sums per component, gamma_4 |M_f| |(p, 1)|, and
+//    raster's float model matrix M_f is itself within model.bound of the exact one (model_precision.h):
+//    bound |(p, 1)| more;
 inline constexpr int kWorldPositionRoundings = 4;
-glm::dvec3 raster_world_position_error(const glm::mat4& model, const glm::vec3& position);
+glm::dvec3 raster_world_position_error(const ModelMatrixError& model, const glm::vec3& position);
 //  - a file normal, normalize(float(N n)) with N = transpose(inverse(mat3(M))) in float. An entry of the inverse
 //    is a 2x2 minor (a b - c d: 3 roundings of |a b| + |c d| =: A) times the reciprocal of the determinant (a
 //    3-term sum of entry times minor: gamma_6 of its magnitude D, then the reciprocal and the product: 2 more):
 //    |dN_ij| <= (gamma_4 A_ij + |minor_ij| gamma_8 D / |det|) / |det|, unbounded when gamma_8 D >= |det|. Then
 //    the product with n (gamma_3 |N| |n|), and a unit vector moves by at most 2 |dv| / |v| plus its own
-//    normalisation's gamma_5;
+//    normalisation's gamma_5. The minors and D are taken over |M_f| = |M| + model.bound, the determinant at its
+//    least, |det M| (1 - k)^3 (model_precision.h), and M_f's own distance from M moves the exact inverse by
+//    inverse_input_error (model_precision.h) more;
 inline constexpr int kMinorRoundings = 4;
 inline constexpr int kDeterminantRoundings = 8;
 inline constexpr int kNormalizeAttributeRoundings = 5;
 inline constexpr int kCrossRoundingsForNormals = 2;
-double raster_file_normal_error(const glm::mat4& model, const glm::vec3& normal);
+double raster_file_normal_error(const ModelMatrixError& model, const glm::vec3& normal);
 //  - a face normal normalize(cross(b - a, c - a)) from raster's float world positions (within their errors e of
 //    exact): the edges (one difference each, plus the vertices' errors), the cross product (|de1| x| (|e2| + |de2|)
 //    + |e1| x| |de2| + gamma_2 |e1| x| |e2|, x| the cross product with its two products added), and the unit

@@ -313,17 +313,18 @@ Camera raster_camera(const Seed000Camera& c) {
 // Eq. (1) through raster's pipeline: a camera at the origin with a 90 degree field of view, and a model matrix
 // that puts OBJ point (x, y) at view (aspect * x, y, -1), which projects to NDC (x, y). raster's viewport then
 // gives screen y = h/2 (1 - y), which is the document's canvas y' = h/2 (1 + y) counted from the top row.
-void set_canvas_transform(int width, int height, Scene& scene, glm::mat4& model) {
+void set_canvas_transform(int width, int height, Scene& scene, ModelTransform& transform) {
     scene.camera = Camera{};
     scene.camera.eye = glm::vec3(0.0f);
     scene.camera.target = glm::vec3(0.0f, 0.0f, -1.0f);
     scene.camera.fov_y_degrees = 90.0f;
     scene.camera.near = 0.5f;
     scene.camera.far = 2.0f;
-    model = glm::mat4(1.0f);
-    model[0][0] = static_cast<float>(width) / static_cast<float>(height);
-    model[2][2] = 0.0f;  // eq. (1) drops z
-    model[3][2] = -1.0f;
+    MatrixStep canvas;
+    canvas.matrix[0][0] = static_cast<float>(width) / static_cast<float>(height);
+    canvas.matrix[2][2] = 0.0f;  // eq. (1) drops z
+    canvas.matrix[3][2] = -1.0f;
+    transform.steps = {canvas};
 }
 
 }  // namespace
@@ -380,7 +381,7 @@ void read_seed000_scene(const Node& root, const DocumentReader& reader, const Se
         whole.data.face_colors.clear();
         whole.source = config.obj.string();
         whole.material = material;
-        set_canvas_transform(config.width, config.height, scene, whole.model);
+        set_canvas_transform(config.width, config.height, scene, whole.transform);
         scene.meshes.push_back(std::move(whole));
         return;
     }
@@ -396,7 +397,11 @@ void read_seed000_scene(const Node& root, const DocumentReader& reader, const Se
         object.data = object_mesh(mesh, k);
         object.source = config.obj.string() + " object " + std::to_string(k);
         object.material = material;
-        if (k < config.transforms.size()) object.model = glm::mat4(seed000_model_matrix(config.transforms[k]));
+        if (k < config.transforms.size()) {
+            // M = T R S: scale first, then the rotation, then the translation.
+            const Seed000Transform& t = config.transforms[k];
+            object.transform.steps = {ScaleStep{t.scale}, QuaternionStep{t.rotation_wxyz}, TranslateStep{t.translation}};
+        }
         scene.meshes.push_back(std::move(object));
     }
 }

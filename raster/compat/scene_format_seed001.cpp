@@ -10,7 +10,7 @@
 
 #include "raster/scene/validation.h"
 #include "raster/compat/seed_scene_readers.h"
-#include "raster/transform/transform.h"
+#include "raster/transform/model_matrix.h"
 
 namespace raster {
 namespace {
@@ -73,13 +73,13 @@ void warn_unknown_keys(const Node& map, const DocumentReader& reader, std::initi
 // A transform list as balboa's parse_transformation reads it, applied in the order listed (M = T_n ... T_1).
 // `lookat` takes {position, target, up} and places its object at `position` looking at `target` (eq. (28));
 // rotate, scale and translate are raster's own transform steps.
-glm::mat4 read_seed001_transform(const Node& list, const DocumentReader& reader) {
+std::vector<TransformStep> read_seed001_transform(const Node& list, const DocumentReader& reader) {
     reader.expect_sequence(list, "transform");
-    glm::mat4 matrix(1.0f);
+    std::vector<TransformStep> steps;
     for (const Node& step : list.items()) {
         const Node& lookat = step.is_map() && step.size() == 1 ? reader.optional(step, "lookat") : Node::undefined();
         if (!lookat.is_defined()) {
-            matrix = read_transform_steps({step}, reader) * matrix;
+            steps.push_back(read_transform_steps({step}, reader).front());
             continue;
         }
         reader.expect_map(lookat, "lookat");
@@ -94,9 +94,9 @@ glm::mat4 read_seed001_transform(const Node& list, const DocumentReader& reader)
             if (problem.rfind("eye", 0) == 0) problem.replace(0, 3, "position");
             reader.fail(lookat, "lookat: " + problem);
         }
-        matrix = look_at_model_matrix(frame.eye, frame.target, frame.up) * matrix;
+        steps.push_back(LookAtStep{frame.eye, frame.target, frame.up});
     }
-    return matrix;
+    return steps;
 }
 
 // Numbers in threes, written flat ([x0, y0, z0, x1, ...] as the document prints them) or as [[x, y, z], ...].
@@ -179,15 +179,14 @@ void read_seed001_scene(const Node& root, const DocumentReader& reader, const Me
     set_seed001_camera(s, z_near, scene);
     if (std::string problem = settings_problem(settings); !problem.empty()) reader.fail(camera, problem);
 
-    // The camera's transform is camera-to-world; the view matrix, its inverse, is folded into every model matrix
-    // (unlit shading needs no world space), so raster's camera stays at the origin.
-    glm::mat4 camera_to_world(1.0f);
+    // The camera's transform is camera-to-world; its inverse, the view, follows every object's own steps (unlit
+    // shading needs no world space), so raster's camera stays at the origin.
+    std::vector<TransformStep> camera_to_world;
     if (const Node& transform = reader.optional(camera, "transform"); transform.is_defined()) {
         camera_to_world = read_seed001_transform(transform, reader);
-        if (!(std::fabs(glm::determinant(camera_to_world)) > 1e-12f))
+        if (!(std::fabs(glm::determinant(compose_steps(camera_to_world))) > 1e-12f))
             reader.fail(transform, "the camera transform is not invertible");
     }
-    const glm::mat4 view = glm::inverse(camera_to_world);
 
     settings.background = glm::vec3(kSeed001Background);
     if (const Node& background = reader.optional(root, "background"); background.is_defined())
@@ -210,10 +209,9 @@ void read_seed001_scene(const Node& root, const DocumentReader& reader, const Me
             mesh.source = reader.file() + ":" + std::to_string(node.line()) + " (inline object)";
             mesh.data = read_inline_object(node, reader);
         }
-        glm::mat4 model(1.0f);
         if (const Node& transform = reader.optional(node, "transform"); transform.is_defined())
-            model = read_seed001_transform(transform, reader);
-        mesh.model = view * model;
+            mesh.transform.steps = read_seed001_transform(transform, reader);
+        mesh.transform.then_inverse_of = camera_to_world;
         scene.meshes.push_back(std::move(mesh));
     }
 }

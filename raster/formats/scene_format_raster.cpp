@@ -4,48 +4,45 @@
 #include "raster/scene/validation.h"
 #include "raster/scene/sample_counts.h"
 #include "raster/formats/scene_formats.h"
-#include "raster/transform/transform.h"
 #include "raster/texture/texture.h"
 
 namespace raster {
 
-glm::mat4 read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
-                               const DocumentReader& reader) {
-    glm::mat4 model(1.0f);
+std::vector<TransformStep> read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
+                                               const DocumentReader& reader) {
+    std::vector<TransformStep> out;
     for (const Node& step : steps) {
         if (!step.is_map() || step.size() != 1)
             reader.fail(step, "each transform step is a map with one key: translate, rotate, quaternion, scale or lookat");
         reader.check_keys(step, {"translate", "rotate", "quaternion", "scale", "lookat"});
         const std::string kind = step.entries().front().key.text();
         const Node& value = step.entries().front().value;
-        glm::mat4 matrix(1.0f);
         if (kind == "translate") {
-            matrix = translate_matrix(reader.vec3(value, "translate"));
+            out.push_back(TranslateStep{reader.vec3(value, "translate")});
         } else if (kind == "scale") {
-            matrix = scale_matrix(reader.vec3(value, "scale", true));
+            out.push_back(ScaleStep{reader.vec3(value, "scale", true)});
         } else if (kind == "rotate") {
             // {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]
-            float angle;
-            glm::vec3 axis;
+            RotateStep rotate;
             if (value.is_map()) {
                 reader.check_keys(value, {"angle", "axis"});
-                angle = reader.finite_float(reader.required(value, "angle"), "rotate angle");
-                axis = reader.vec3(reader.required(value, "axis"), "rotate axis");
+                rotate.degrees = reader.finite_float(reader.required(value, "angle"), "rotate angle");
+                rotate.axis = reader.vec3(reader.required(value, "axis"), "rotate axis");
             } else {
                 if (!value.is_sequence() || value.size() != 4)
                     reader.fail(value, "rotate is {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]");
-                angle = reader.finite_float(value[0], "rotate angle");
-                axis = {reader.finite_float(value[1], "rotate axis"), reader.finite_float(value[2], "rotate axis"),
-                        reader.finite_float(value[3], "rotate axis")};
+                rotate.degrees = reader.finite_float(value[0], "rotate angle");
+                rotate.axis = {reader.finite_float(value[1], "rotate axis"), reader.finite_float(value[2], "rotate axis"),
+                               reader.finite_float(value[3], "rotate axis")};
             }
-            if (!(glm::length(axis) > 0.0f)) reader.fail(value, "rotate axis must not be zero");
-            matrix = rotate_matrix(angle, axis);
+            if (!(glm::length(rotate.axis) > 0.0f)) reader.fail(value, "rotate axis must not be zero");
+            out.push_back(rotate);
         } else if (kind == "quaternion") {
             if (!value.is_sequence() || value.size() != 4) reader.fail(value, "quaternion is [w, x, y, z]");
-            const float w = reader.finite_float(value[0], "quaternion"), x = reader.finite_float(value[1], "quaternion"),
-                        y = reader.finite_float(value[2], "quaternion"), z = reader.finite_float(value[3], "quaternion");
-            if (!(w * w + x * x + y * y + z * z > 0.0f)) reader.fail(value, "quaternion must not be zero");
-            matrix = quaternion_matrix(w, x, y, z);
+            QuaternionStep quaternion;
+            for (int i = 0; i < 4; ++i) quaternion.wxyz[i] = reader.finite_float(value[i], "quaternion");
+            if (!(glm::dot(quaternion.wxyz, quaternion.wxyz) > 0.0f)) reader.fail(value, "quaternion must not be zero");
+            out.push_back(quaternion);
         } else {  // lookat: place the object at `eye`, facing `target` with its -z axis
             reader.expect_map(value, "lookat");
             reader.check_keys(value, {"eye", "target", "up"});
@@ -55,14 +52,13 @@ glm::mat4 read_transform_steps(const std::vector<std::reference_wrapper<const No
             if (const Node& up = reader.optional(value, "up"); up.is_defined()) frame.up = reader.vec3(up, "lookat up");
             if (const auto problem = camera_problem(frame))
                 reader.fail(value, "lookat: " + problem->message.substr(problem->message.find(' ') + 1));
-            matrix = look_at_model_matrix(frame.eye, frame.target, frame.up);
+            out.push_back(LookAtStep{frame.eye, frame.target, frame.up});
         }
-        model = matrix * model;
     }
-    return model;
+    return out;
 }
 
-glm::mat4 read_transform_chain(const Node& list, const DocumentReader& reader) {
+std::vector<TransformStep> read_transform_chain(const Node& list, const DocumentReader& reader) {
     reader.expect_sequence(list, "transform");
     return read_transform_steps(list.items(), reader);
 }
@@ -266,7 +262,7 @@ SceneMesh read_mesh(const Node& node, const DocumentReader& reader, const SceneF
         mesh.source = reader.file() + ":" + std::to_string(node.line()) + " (inline mesh)";
         mesh.data = read_inline_mesh(node, reader);
     }
-    if (const Node& v = reader.optional(node, "transform"); v.is_defined()) mesh.model = read_transform_chain(v, reader);
+    if (const Node& v = reader.optional(node, "transform"); v.is_defined()) mesh.transform.steps = read_transform_chain(v, reader);
     // The scene's material, when it gives one, is every triangle's; else an OBJ's own materials apply.
     if (const Node& v = reader.optional(node, "material"); v.is_defined())
         mesh.material = read_material(v, reader, files.texture);

@@ -43,9 +43,10 @@ struct CameraNodes {
 const Node& camera_node_to_blame(const CameraNodes& nodes, CameraField field);
 
 // A transform chain: a list of single-key maps (translate, rotate, quaternion, scale, lookat), applied to the
-// object in the order listed, so the matrix is M = T_n * ... * T_1; and the same for steps gathered otherwise.
-glm::mat4 read_transform_chain(const Node& list, const DocumentReader& reader);
-glm::mat4 read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
-                               const DocumentReader& reader);
+// object in the order listed (the matrix is M = T_n * ... * T_1), read into steps as written; and the same for steps
+// gathered otherwise.
+std::vector<TransformStep> read_transform_chain(const Node& list, const DocumentReader& reader);
+std::vector<TransformStep> read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
+                                                const DocumentReader& reader);
 
 }  // namespace raster

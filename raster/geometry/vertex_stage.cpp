@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "raster/transform/model_matrix.h"
 #include "raster/transform/transform.h"
 
 namespace raster {
@@ -67,11 +68,12 @@ TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& ne
         const uint32_t first_vertex = static_cast<uint32_t>(out.clip.size());
         out.mesh_first_vertex.push_back(first_vertex);
         out.mesh_first_triangle.push_back(static_cast<uint32_t>(out.triangles.size()));
-        const glm::mat4 model_view_projection = view_projection * mesh.model;
+        const glm::mat4 model = model_matrix(mesh.transform);
+        const glm::mat4 model_view_projection = view_projection * model;
         for (const glm::vec3& p : mesh.data.positions) {
             out.clip.push_back(model_view_projection * glm::vec4(p, 1.0f));
             if (needs.world_positions || needs.vertex_normals)
-                out.world_position.push_back(glm::vec3(mesh.model * glm::vec4(p, 1.0f)));
+                out.world_position.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
         }
         for (const TriangleIndices& tri : mesh.data.triangles) {
             out.triangles.push_back({{first_vertex + tri.v[0], first_vertex + tri.v[1], first_vertex + tri.v[2]}});
@@ -80,7 +82,7 @@ TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& ne
         if (!needs.vertex_normals) continue;
         const auto vertex_count = static_cast<uint32_t>(mesh.data.positions.size());
         if (mesh.data.normals.size() == mesh.data.positions.size()) {
-            const glm::mat3 to_world = normal_matrix(mesh.model);
+            const glm::mat3 to_world = normal_matrix(model);
             for (uint32_t i = 0; i < vertex_count; ++i) {
                 const glm::vec3 n = to_world * mesh.data.normals[i];
                 const float length = glm::length(n);

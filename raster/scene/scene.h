@@ -12,6 +12,7 @@
 #include "raster/core/conventions.h"
 #include "raster/scene/material.h"
 #include "raster/scene/mesh.h"
+#include "raster/scene/model_transform.h"
 #include "raster/scene/precision_modes.h"
 
 namespace raster {
@@ -51,10 +52,10 @@ struct Light {
     bool shadows = false;
 };
 
-// One mesh placed in the world: its data in object space, the model matrix and its material.
+// One mesh placed in the world: its data in object space, its model transform and its material.
 struct SceneMesh {
     MeshData data;
-    glm::mat4 model{1.0f};
+    ModelTransform transform;  // the steps as the file gives them; raster and the oracle each compose them
     Material material;               // every triangle's, unless `parts` gives some another
     std::vector<MaterialPart> parts;  // OBJ usemtl: by increasing first_triangle; empty when one material
     std::string source;  // the file it came from, or "inline"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 
@@ -121,6 +122,60 @@ std::optional<CameraProblem> camera_problem(const Camera& c) {
     return std::nullopt;
 }
 
+namespace {
+
+std::optional<std::string> step_problem(const TransformStep& step) {
+    return std::visit(
+        [&](const auto& s) -> std::optional<std::string> {
+            using Step = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<Step, TranslateStep>) {
+                if (!finite3(s.offset)) return "a translate step is not finite";
+            } else if constexpr (std::is_same_v<Step, ScaleStep>) {
+                if (!finite3(s.factors)) return "a scale step is not finite";
+            } else if constexpr (std::is_same_v<Step, RotateStep>) {
+                if (!std::isfinite(s.degrees) || !finite3(s.axis)) return "a rotate step is not finite";
+                if (!(glm::length(glm::dvec3(s.axis)) > 0.0)) return "a rotate step's axis is zero";
+            } else if constexpr (std::is_same_v<Step, QuaternionStep>) {
+                const glm::dvec4 q(s.wxyz);
+                if (!std::isfinite(glm::dot(q, q))) return "a quaternion step is not finite";
+                if (!(glm::dot(q, q) > 0.0)) return "a quaternion step is zero";
+            } else if constexpr (std::is_same_v<Step, LookAtStep>) {
+                Camera frame;
+                frame.eye = s.eye;
+                frame.target = s.target;
+                frame.up = s.up;
+                if (const auto problem = camera_problem(frame))
+                    return "a lookat step: " + problem->message.substr(problem->message.find(' ') + 1);
+            } else {
+                for (int c = 0; c < 4; ++c)
+                    for (int r = 0; r < 4; ++r)
+                        if (!std::isfinite(s.matrix[c][r])) return "a matrix step is not finite";
+            }
+            return std::nullopt;
+        },
+        step);
+}
+
+
+}  // namespace
+
+std::optional<std::string> model_transform_problem(const ModelTransform& transform) {
+    for (const auto* chain : {&transform.steps, &transform.then_inverse_of})
+        for (const TransformStep& step : *chain)
+            if (auto problem = step_problem(step)) return problem;
+    for (const auto* chain : {&transform.steps, &transform.then_inverse_of})
+        if (const double bound = model_magnitude_bound(*chain); !(bound <= kMaxModelMagnitude)) {
+            char text[160];
+            std::snprintf(text, sizeof text,
+                          "the model transform's steps multiply to a matrix whose entries may reach %g, beyond the "
+                          "%g that float arithmetic can carry through the frame",
+                          bound, kMaxModelMagnitude);
+            return std::string(text);
+        }
+    return std::nullopt;
+}
+
+
 void validate_scene(const Scene& scene) {
     auto fail = [&](const std::string& message) { throw InputError(scene.path, 0, 0, message); };
     if (std::string problem = settings_problem(scene.settings); !problem.empty()) fail(problem);
@@ -153,9 +208,7 @@ void validate_scene(const Scene& scene) {
         if (!m.colors.empty() && m.colors.size() != m.positions.size()) fail(mesh.source + ": colour count mismatch");
         if (!m.face_colors.empty() && m.face_colors.size() != m.triangles.size())
             fail(mesh.source + ": face colour count mismatch");
-        for (int r = 0; r < 4; ++r)
-            for (int col = 0; col < 4; ++col)
-                if (!std::isfinite(mesh.model[col][r])) fail(mesh.source + ": the model transform is not finite");
+        if (const auto problem = model_transform_problem(mesh.transform)) fail(mesh.source + ": " + *problem);
         if (!std::isfinite(mesh.material.exponent) || !finite3(mesh.material.ambient) ||
             !finite3(mesh.material.diffuse) || !finite3(mesh.material.specular) || !finite3(mesh.material.color))
             fail(mesh.source + ": material values must be finite");

@@ -39,4 +39,8 @@ struct CameraProblem {
 };
 std::optional<CameraProblem> camera_problem(const Camera& camera);
 
+// The model transform check (part of validate_scene): a value not finite, a zero axis or quaternion, a degenerate
+// look-at, or a product that may pass kMaxModelMagnitude (model_transform.h); nothing when it can be composed.
+std::optional<std::string> model_transform_problem(const ModelTransform& transform);
+
 }  // namespace raster

@@ -20,6 +20,7 @@
 #include "raster/frame/render.h"
 #include "raster/geometry/sample_pattern.h"
 #include "raster/transform/camera_matrices.h"
+#include "raster/transform/model_matrix.h"
 #include "tests/support/oracle_test_scenes.h"
 
 namespace raster::oracle {
@@ -59,9 +60,9 @@ Scene in_float_view_space(const Scene& scene) {
     out.camera.target = glm::vec3(0.0f, 0.0f, -1.0f);
     out.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
     for (SceneMesh& mesh : out.meshes) {
-        const glm::mat4 model_view = view_matrix(scene.camera) * mesh.model;
+        const glm::mat4 model_view = view_matrix(scene.camera) * model_matrix(mesh.transform);
         for (glm::vec3& p : mesh.data.positions) p = glm::vec3(model_view * glm::vec4(p, 1.0f));
-        mesh.model = glm::mat4(1.0f);
+        mesh.transform = {};
     }
     return out;
 }

@@ -10,6 +10,7 @@
 
 #include "raster/core/errors.h"
 #include "raster/compat/scene_loader.h"
+#include "raster/transform/model_matrix.h"
 
 namespace {
 
@@ -23,7 +24,8 @@ void expect_vec3(const glm::vec3& v, float x, float y, float z) {
     EXPECT_NEAR(v.z, z, 1e-5f);
 }
 
-glm::vec3 apply(const glm::mat4& m, const glm::vec3& p) {
+glm::vec3 apply(const raster::ModelTransform& transform, const glm::vec3& p) {
+    const glm::mat4 m = raster::model_matrix(transform);
     const glm::vec4 q = m * glm::vec4(p, 1.0f);
     return glm::vec3(q.x, q.y, q.z) / q.w;
 }
@@ -73,8 +75,8 @@ TEST(SceneLoader, appliesDocumentedDefaults) {
     // mesh: identity transform, default material
     ASSERT_EQ(scene.meshes.size(), 1u);
     const raster::SceneMesh& mesh = scene.meshes[0];
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) EXPECT_FLOAT_EQ(mesh.model[c][r], c == r ? 1.0f : 0.0f);
+    EXPECT_TRUE(mesh.transform.steps.empty());
+    EXPECT_TRUE(mesh.transform.then_inverse_of.empty());
     expect_vec3(mesh.material.color, 1, 1, 1);
     expect_vec3(mesh.material.ambient, 0.1f, 0.1f, 0.1f);
     expect_vec3(mesh.material.diffuse, 0.7f, 0.7f, 0.7f);
@@ -150,62 +152,62 @@ TEST(SceneLoader, acceptsIntegersOrFloatsAndGreyColours) {
 TEST(SceneLoader, translateThenScaleAppliesTranslateFirst) {
     // (1,0,0) + (1,0,0) = (2,0,0), then x2 = (4,0,0)
     const Scene scene = scene_with_transform("      - translate: [1, 0, 0]\n      - scale: 2\n");
-    expect_vec3(apply(scene.meshes.at(0).model, {1, 0, 0}), 4, 0, 0);
-    expect_vec3(apply(scene.meshes.at(0).model, {0, 1, 0}), 2, 2, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {1, 0, 0}), 4, 0, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {0, 1, 0}), 2, 2, 0);
 }
 
 TEST(SceneLoader, scaleThenTranslateAppliesScaleFirst) {
     // (1,0,0) x2 = (2,0,0), then + (1,0,0) = (3,0,0)
     const Scene scene = scene_with_transform("      - scale: 2\n      - translate: [1, 0, 0]\n");
-    expect_vec3(apply(scene.meshes.at(0).model, {1, 0, 0}), 3, 0, 0);
-    expect_vec3(apply(scene.meshes.at(0).model, {0, 1, 0}), 1, 2, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {1, 0, 0}), 3, 0, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {0, 1, 0}), 1, 2, 0);
 }
 
 TEST(SceneLoader, scaleTakesANumberOrAVector) {
     const Scene scene = scene_with_transform("      - scale: [1, 2, 3]\n");
-    expect_vec3(apply(scene.meshes.at(0).model, {1, 1, 1}), 1, 2, 3);
+    expect_vec3(apply(scene.meshes.at(0).transform, {1, 1, 1}), 1, 2, 3);
 }
 
 TEST(SceneLoader, rotateMapSyntaxIsDegreesAboutAxis) {
     // 90 degrees about +z (right-handed): x -> y, y -> -x.
     const Scene scene = scene_with_transform("      - rotate: {angle: 90, axis: [0, 0, 1]}\n");
-    expect_vec3(apply(scene.meshes.at(0).model, {1, 0, 0}), 0, 1, 0);
-    expect_vec3(apply(scene.meshes.at(0).model, {0, 1, 0}), -1, 0, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {1, 0, 0}), 0, 1, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {0, 1, 0}), -1, 0, 0);
     // 90 degrees about +y: x -> -z, z -> x.
     const Scene about_y = scene_with_transform("      - rotate: {angle: 90, axis: [0, 1, 0]}\n");
-    expect_vec3(apply(about_y.meshes.at(0).model, {1, 0, 0}), 0, 0, -1);
-    expect_vec3(apply(about_y.meshes.at(0).model, {0, 0, 1}), 1, 0, 0);
+    expect_vec3(apply(about_y.meshes.at(0).transform, {1, 0, 0}), 0, 0, -1);
+    expect_vec3(apply(about_y.meshes.at(0).transform, {0, 0, 1}), 1, 0, 0);
 }
 
 TEST(SceneLoader, rotateListSyntaxMatchesMapSyntax) {
     // [degrees, x, y, z]; the axis need not be unit length.
     const Scene scene = scene_with_transform("      - rotate: [90, 0, 0, 2]\n");
-    expect_vec3(apply(scene.meshes.at(0).model, {1, 0, 0}), 0, 1, 0);
-    expect_vec3(apply(scene.meshes.at(0).model, {0, 1, 0}), -1, 0, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {1, 0, 0}), 0, 1, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {0, 1, 0}), -1, 0, 0);
     // 120 degrees about (1,1,1) cycles the axes: x -> y -> z -> x.
     const Scene cyclic = scene_with_transform("      - rotate: [120, 1, 1, 1]\n");
-    expect_vec3(apply(cyclic.meshes.at(0).model, {1, 0, 0}), 0, 1, 0);
-    expect_vec3(apply(cyclic.meshes.at(0).model, {0, 1, 0}), 0, 0, 1);
+    expect_vec3(apply(cyclic.meshes.at(0).transform, {1, 0, 0}), 0, 1, 0);
+    expect_vec3(apply(cyclic.meshes.at(0).transform, {0, 1, 0}), 0, 0, 1);
 }
 
 TEST(SceneLoader, quaternionIsWxyzAndNormalised) {
     // [1, 0, 0, 1] normalises to (cos 45, 0, 0, sin 45): 90 degrees about +z.
     const Scene scene = scene_with_transform("      - quaternion: [1, 0, 0, 1]\n");
-    expect_vec3(apply(scene.meshes.at(0).model, {1, 0, 0}), 0, 1, 0);
-    expect_vec3(apply(scene.meshes.at(0).model, {0, 0, 1}), 0, 0, 1);
+    expect_vec3(apply(scene.meshes.at(0).transform, {1, 0, 0}), 0, 1, 0);
+    expect_vec3(apply(scene.meshes.at(0).transform, {0, 0, 1}), 0, 0, 1);
     // w first: [0, 1, 0, 0] is 180 degrees about +x.
     const Scene half_turn = scene_with_transform("      - quaternion: [0, 1, 0, 0]\n");
-    expect_vec3(apply(half_turn.meshes.at(0).model, {0, 1, 0}), 0, -1, 0);
-    expect_vec3(apply(half_turn.meshes.at(0).model, {1, 0, 0}), 1, 0, 0);
+    expect_vec3(apply(half_turn.meshes.at(0).transform, {0, 1, 0}), 0, -1, 0);
+    expect_vec3(apply(half_turn.meshes.at(0).transform, {1, 0, 0}), 1, 0, 0);
     // The identity quaternion.
     const Scene identity = scene_with_transform("      - quaternion: [2, 0, 0, 0]\n");
-    expect_vec3(apply(identity.meshes.at(0).model, {1, 2, 3}), 1, 2, 3);
+    expect_vec3(apply(identity.meshes.at(0).transform, {1, 2, 3}), 1, 2, 3);
 }
 
 TEST(SceneLoader, lookatPlacesObjectAtEyeFacingTarget) {
     const Scene scene =
         scene_with_transform("      - lookat: {eye: [1, 0, 0], target: [0, 0, 0], up: [0, 1, 0]}\n");
-    const glm::mat4& m = scene.meshes.at(0).model;
+    const raster::ModelTransform& m = scene.meshes.at(0).transform;
     expect_vec3(apply(m, {0, 0, 0}), 1, 0, 0);   // the object's origin goes to eye
     expect_vec3(apply(m, {0, 0, -1}), 0, 0, 0);  // its -z axis points at the target
     expect_vec3(apply(m, {0, 1, 0}), 1, 1, 0);   // its +y follows up
@@ -216,7 +218,7 @@ TEST(SceneLoader, chainOfThreeStepsComposesInOrder) {
     // (1,0,0): scale 2 -> (2,0,0); rotate 90 about z -> (0,2,0); translate (0,0,5) -> (0,2,5).
     const Scene scene = scene_with_transform(
         "      - scale: 2\n      - rotate: {angle: 90, axis: [0, 0, 1]}\n      - translate: [0, 0, 5]\n");
-    expect_vec3(apply(scene.meshes.at(0).model, {1, 0, 0}), 0, 2, 5);
+    expect_vec3(apply(scene.meshes.at(0).transform, {1, 0, 0}), 0, 2, 5);
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -158,8 +158,8 @@ TEST(TiledRender, aTransparentMeshAmongChunksGivesTheReferenceBytes) {
     Scene scene = test_support::unlit_scene({test_support::grid_mesh(40, glm::vec3(0.2f, 0.5f, 0.7f)),
                                              test_support::grid_mesh(30, glm::vec3(0.9f, 0.4f, 0.1f), 0.5f),
                                              test_support::grid_mesh(40, glm::vec3(0.6f, 0.6f, 0.2f))});
-    scene.meshes[1].model[3] = glm::vec4(0.2f, 0.1f, 0.5f, 1.0f);  // in front, shifted
-    scene.meshes[2].model[3] = glm::vec4(-0.3f, 0.2f, -0.5f, 1.0f);
+    scene.meshes[1].transform.steps = {TranslateStep{{0.2f, 0.1f, 0.5f}}};  // in front, shifted
+    scene.meshes[2].transform.steps = {TranslateStep{{-0.3f, 0.2f, -0.5f}}};
     RenderOptions options;
     options.threads = 2;
     RenderOptions reference_options = options;
