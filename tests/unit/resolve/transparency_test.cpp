@@ -1,5 +1,5 @@
 // Transparency: a pane's blend over the background and over an opaque surface by the compositing formula, layers in
-// depth order whatever the draw order, the weighted average's own formula, a fully transparent pane changing no
+// depth order whatever the draw order, the weighted average's own formula, MSAA's shading rate in both modes, a fully transparent pane changing no
 // byte, an opaque surface in front hiding the panes, RGBA alpha, the A-buffer's cap, panes casting no shadow, and the
 // split of the front end's chunks.
 #include "raster/resolve/transparency.h"
@@ -85,6 +85,20 @@ TEST(Transparency, theWeightedModeAveragesTheLayersByOpacityInAnyOrder) {
     Scene swapped = scene;
     std::swap(swapped.meshes[0], swapped.meshes[1]);
     EXPECT_EQ(draw(scene).image.pixels, draw(swapped).image.pixels);
+}
+
+// MSAA shades a transparent triangle once per pixel in either mode: on one layer, where both modes are exact, the
+// weighted mode gives the sorted mode's bytes. The pane's colour runs from red to blue across it, so shading each
+// sample instead (as SSAA does, which the test shows differs here) would move the bytes.
+TEST(Transparency, msaaShadesATransparentTriangleOncePerPixelInEitherMode) {
+    Scene scene = pane_scene({pane(3.0f, 1.0f, glm::vec3(1.0f), 0.5f)}, 4);
+    scene.meshes[0].data.colors = {{1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {1, 0, 0}};  // left red, right blue
+    scene.settings.msaa = true;
+    const RenderResult sorted = draw(scene);
+    scene.settings.transparency.mode = TransparencyMode::weighted;
+    EXPECT_EQ(draw(scene).image.pixels, sorted.image.pixels);
+    scene.settings.msaa = false;
+    EXPECT_NE(draw(scene).image.pixels, sorted.image.pixels) << "the shading rate changes no byte of this scene";
 }
 
 TEST(Transparency, aFullyTransparentPaneChangesNoByte) {
