@@ -80,6 +80,17 @@ TEST(SceneLoader, seed003SceneInTheDocumentsKeySetLoads) {
     EXPECT_FLOAT_EQ(mesh.material.exponent, 12.0f);
 }
 
+// raster's extension of the document: a light's `shadows` key, off unless a light says so.
+TEST(SceneLoader, seed003LightCastsShadowsOnlyWhenItSaysSo) {
+    TempDir dir;
+    dir.write("models/tri.obj", kObjWithNormals);
+    std::string text = seed003_scene("models/tri.obj", "-0.5", "-50");
+    EXPECT_FALSE(raster::load_scene(dir.write("plain.json", text)).lights.at(0).shadows);
+    const std::string light = "\"color\": [1, 0.5, 0.25]}";
+    text.replace(text.find(light), light.size(), "\"color\": [1, 0.5, 0.25], \"shadows\": true}");
+    EXPECT_TRUE(raster::load_scene(dir.write("shadowed.json", text)).lights.at(0).shadows);
+}
+
 TEST(SceneLoader, seed003ObjPathIsRelativeToTheSceneFile) {
     TempDir dir;
     dir.write("deep/models/tri.obj", kObjWithNormals);

@@ -130,6 +130,37 @@ TEST(SceneLoader, readsEveryDocumentedField) {
     EXPECT_FLOAT_EQ(m.exponent, 8.0f);
 }
 
+// Every key of `render` that the test above leaves at its default, each set to a value of its own, lands in its own
+// field: a key read into its neighbour's field (gooch's alpha into beta) or read and dropped shows here.
+TEST(SceneLoader, readsEveryOtherRenderKeyIntoItsOwnField) {
+    const Scene scene = parse_scene(
+        std::string("render: {shading: gooch, cel_bands: 7, gooch: {blue: 0.1, yellow: 0.2, alpha: 0.3, beta: 0.7},\n"
+                    "         edges: float, interpolation: affine, depth: fixed24, clipping: guard-band,\n"
+                    "         hierarchical_z: false,\n"
+                    "         shadows: {resolution: 256, bias: 0.01, slope_bias: 2.5, pcf: 3},\n"
+                    "         transparency: {mode: weighted, max_fragments: 1000}}\n"
+                    "meshes:\n") + kTriangle,
+        "scene.yaml");
+    const raster::RenderSettings& s = scene.settings;
+    EXPECT_EQ(s.shading, raster::ShadingMode::gooch);
+    EXPECT_EQ(s.cel_bands, 7);
+    EXPECT_FLOAT_EQ(s.gooch.blue, 0.1f);
+    EXPECT_FLOAT_EQ(s.gooch.yellow, 0.2f);
+    EXPECT_FLOAT_EQ(s.gooch.alpha, 0.3f);
+    EXPECT_FLOAT_EQ(s.gooch.beta, 0.7f);
+    EXPECT_EQ(s.modes.edges, raster::EdgeArithmetic::float32);
+    EXPECT_EQ(s.modes.interpolation, raster::Interpolation::affine);
+    EXPECT_EQ(s.modes.depth, raster::DepthFormat::fixed24);
+    EXPECT_EQ(s.modes.clipping, raster::Clipping::guard_band);
+    EXPECT_FALSE(s.modes.hierarchical_z);
+    EXPECT_EQ(s.shadows.resolution, 256);
+    EXPECT_FLOAT_EQ(s.shadows.bias, 0.01f);
+    EXPECT_FLOAT_EQ(s.shadows.slope_bias, 2.5f);
+    EXPECT_EQ(s.shadows.pcf, 3);
+    EXPECT_EQ(s.transparency.mode, raster::TransparencyMode::weighted);
+    EXPECT_EQ(s.transparency.max_fragments, 1000);
+}
+
 TEST(SceneLoader, acceptsIntegersOrFloatsAndGreyColours) {
     const Scene scene = parse_scene(std::string("image: {width: 320.0, height: 200, background: 0.5}\n"
                                                 "camera: {fov: 30, near: 1, far: 10.5}\n"
