@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "oracle/reference/matrix_magnitude.h"
 #include "oracle/reference/model_transform.h"
 #include "oracle/reference/precision.h"
 
@@ -20,39 +21,11 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 template <typename Matrix>
-Matrix absolute(const Matrix& m) {
-    Matrix a;
-    for (int c = 0; c < m.length(); ++c)
-        for (int r = 0; r < m.length(); ++r) a[c][r] = std::fabs(m[c][r]);
-    return a;
-}
-
-template <typename Matrix>
 Matrix filled(double value) {
     Matrix a;
     for (int c = 0; c < a.length(); ++c)
         for (int r = 0; r < a.length(); ++r) a[c][r] = value;
     return a;
-}
-
-template <typename Matrix>
-double largest_entry(const Matrix& m) {
-    double largest = 0.0;
-    for (int c = 0; c < m.length(); ++c)
-        for (int r = 0; r < m.length(); ++r) largest = std::max(largest, m[c][r]);
-    return largest;
-}
-
-// ||m||_inf of a non-negative matrix: its largest row sum.
-template <typename Matrix>
-double largest_row_sum(const Matrix& m) {
-    double largest = 0.0;
-    for (int r = 0; r < m.length(); ++r) {
-        double sum = 0.0;
-        for (int c = 0; c < m.length(); ++c) sum += m[c][r];
-        largest = std::max(largest, sum);
-    }
-    return largest;
 }
 
 // How far raster's float matrix for `step` can be from the oracle's `exact`.
@@ -74,10 +47,7 @@ glm::dmat4 step_error(const TransformStep& step, const glm::dmat4& exact) {
                 for (int c = 0; c < 3; ++c)
                     for (int r = 0; r < 3; ++r) error[c][r] = entry;
             } else if constexpr (std::is_same_v<Step, LookAtStep>) {
-                Camera frame;
-                frame.eye = s.eye;
-                frame.target = s.target;
-                frame.up = s.up;
+                const Camera frame = look_at_camera(s);
                 const CameraMatrixError basis = raster_camera_error(frame, oracle_camera(frame, 1, 1));
                 for (int c = 0; c < 3; ++c)  // the columns are right, up and back
                     for (int r = 0; r < 3; ++r) error[c][r] = basis.row[c];
@@ -129,8 +99,9 @@ double minor_permanent(const glm::dmat4& m, int skip_c, int skip_r) {
 ModelMatrixError inverse_error(const ModelMatrixError& chain) {
     ModelMatrixError out;
     out.exact = glm::inverse(chain.exact);
-    const glm::dmat4 input = inverse_input_error(chain.exact, chain.bound);
-    const double k = largest_row_sum(absolute(out.exact) * chain.bound);
+    const InverseInputError<glm::dmat4> input_error = inverse_input_error(chain.exact, chain.bound);
+    const glm::dmat4& input = input_error.bound;
+    const double k = input_error.k;
     const double det_floor = std::fabs(glm::determinant(chain.exact)) * std::pow(1.0 - std::min(k, 1.0), 4);
     const glm::dmat4 magnitude = absolute(chain.exact) + chain.bound;  // |C_f|
     double permanent = 0.0;  // D: the first column's expansion
@@ -152,21 +123,21 @@ ModelMatrixError inverse_error(const ModelMatrixError& chain) {
 }
 
 template <typename Matrix>
-Matrix inverse_input_error_of(const Matrix& exact, const Matrix& bound) {
+InverseInputError<Matrix> inverse_input_error_of(const Matrix& exact, const Matrix& bound) {
     const Matrix inverse = absolute(glm::inverse(exact));
     const Matrix f = inverse * bound;
     const double k = largest_row_sum(f);
-    if (!(k < 0.5)) return filled<Matrix>(kInfinity);
+    if (!(k < 0.5)) return {filled<Matrix>(kInfinity), k};
     const Matrix first = f * inverse;
-    return first + filled<Matrix>(k * largest_entry(first) / (1.0 - k));
+    return {first + filled<Matrix>(k * largest_entry(first) / (1.0 - k)), k};
 }
 
 }  // namespace
 
-glm::dmat3 inverse_input_error(const glm::dmat3& exact, const glm::dmat3& bound) {
+InverseInputError<glm::dmat3> inverse_input_error(const glm::dmat3& exact, const glm::dmat3& bound) {
     return inverse_input_error_of(exact, bound);
 }
-glm::dmat4 inverse_input_error(const glm::dmat4& exact, const glm::dmat4& bound) {
+InverseInputError<glm::dmat4> inverse_input_error(const glm::dmat4& exact, const glm::dmat4& bound) {
     return inverse_input_error_of(exact, bound);
 }
 

@@ -67,8 +67,13 @@ glm::dvec4 model_clip_error(const ModelMatrixError& model, const CameraMatrixErr
                             const OracleCamera& camera, const glm::vec3& position);
 
 // The entrywise bound on |inv(A_f) - inv(A)| for |A_f - A| <= bound (the first item of the inverse above), for a
-// 3 x 3 or 4 x 4 A; infinite entries when ||inv(A)| bound||_inf reaches 1/2.
-glm::dmat3 inverse_input_error(const glm::dmat3& exact, const glm::dmat3& bound);
-glm::dmat4 inverse_input_error(const glm::dmat4& exact, const glm::dmat4& bound);
+// 3 x 3 or 4 x 4 A, and k = ||inv(A)| bound||_inf; infinite entries when k reaches 1/2.
+template <typename Matrix>
+struct InverseInputError {
+    Matrix bound;
+    double k = 0.0;
+};
+InverseInputError<glm::dmat3> inverse_input_error(const glm::dmat3& exact, const glm::dmat3& bound);
+InverseInputError<glm::dmat4> inverse_input_error(const glm::dmat4& exact, const glm::dmat4& bound);
 
 }  // namespace raster::oracle

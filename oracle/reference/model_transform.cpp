@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "oracle/reference/camera.h"
+
 namespace raster::oracle {
 namespace {
 
@@ -47,13 +49,11 @@ glm::dmat4 oracle_step_matrix(const TransformStep& step) {
                 m = unit_quaternion_matrix(q[0], q[1], q[2], q[3]);
             } else if constexpr (std::is_same_v<Step, LookAtStep>) {
                 // The object's axes are the camera basis of the same eye, target and up: x right, y up, z back.
-                const glm::dvec3 back = glm::normalize(glm::dvec3(s.eye) - glm::dvec3(s.target));
-                const glm::dvec3 right = glm::normalize(glm::cross(glm::dvec3(s.up), back));
-                const glm::dvec3 up = glm::cross(back, right);
-                m[0] = glm::dvec4(right, 0.0);
-                m[1] = glm::dvec4(up, 0.0);
-                m[2] = glm::dvec4(back, 0.0);
-                m[3] = glm::dvec4(glm::dvec3(s.eye), 1.0);
+                const OracleCamera basis = oracle_camera(look_at_camera(s), 1, 1);
+                m[0] = glm::dvec4(basis.right, 0.0);
+                m[1] = glm::dvec4(basis.up, 0.0);
+                m[2] = glm::dvec4(basis.back, 0.0);
+                m[3] = glm::dvec4(basis.eye, 1.0);
             } else {
                 m = glm::dmat4(s.matrix);
             }

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "oracle/reference/camera_precision.h"
+#include "oracle/reference/matrix_magnitude.h"
 #include "oracle/reference/precision.h"
 
 namespace raster::oracle {
@@ -118,13 +119,6 @@ bool passes_by_the_eye(const std::vector<ClipVertex>& triangle, double near) {
         if (polygon.empty()) return false;
     }
     return true;
-}
-
-glm::dmat4 absolute(const glm::dmat4& m) {
-    glm::dmat4 a;
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) a[c][r] = std::fabs(m[c][r]);
-    return a;
 }
 
 }  // namespace

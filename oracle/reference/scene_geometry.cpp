@@ -26,9 +26,10 @@ void mesh_normals(const SceneMesh& mesh, const ModelMatrixError& model, uint32_t
     const size_t count = data.positions.size();
     if (data.normals.size() == count) {
         const glm::dmat3 to_world = glm::transpose(glm::inverse(glm::dmat3(model.exact)));
+        const NormalMatrixError normal_matrix = raster_normal_matrix_error(model);
         for (size_t i = 0; i < count; ++i) {
             out.normal[first + i] = unit_or_zero(to_world * glm::dvec3(data.normals[i]));
-            out.normal_error[first + i] = raster_file_normal_error(model, data.normals[i]);
+            out.normal_error[first + i] = raster_file_normal_error(normal_matrix, data.normals[i]);
         }
         return;
     }

@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "oracle/reference/matrix_magnitude.h"
 #include "oracle/reference/precision.h"
 
 namespace raster::oracle {
@@ -43,25 +44,15 @@ glm::dvec3 raster_world_position_error(const ModelMatrixError& model, const glm:
     return error;
 }
 
-double raster_file_normal_error(const ModelMatrixError& model, const glm::vec3& normal) {
+NormalMatrixError raster_normal_matrix_error(const ModelMatrixError& model) {
+    NormalMatrixError out;
     const glm::dmat3 m(model.exact), bound(model.bound);
-    glm::dmat3 magnitude;  // |M_f|, the upper 3 x 3
-    for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r) magnitude[c][r] = std::fabs(m[c][r]) + bound[c][r];
-    const glm::dmat3 input = inverse_input_error(m, bound);  // inverse(M_f) against inverse(M), entrywise
-    if (!std::isfinite(input[0][0])) return 2.0;
+    const glm::dmat3 magnitude = absolute(m) + bound;  // |M_f|, the upper 3 x 3
+    const InverseInputError<glm::dmat3> input_error = inverse_input_error(m, bound);  // inverse(M_f) against inverse(M)
+    const glm::dmat3& input = input_error.bound;
+    if (!std::isfinite(input[0][0])) return out;
     const double det = glm::determinant(m);
-    double k = 0.0;  // ||inverse(M)| bound||_inf
-    {
-        const glm::dmat3 inverse = glm::inverse(m);
-        for (int r = 0; r < 3; ++r) {
-            double sum = 0.0;
-            for (int c = 0; c < 3; ++c)
-                for (int j = 0; j < 3; ++j) sum += std::fabs(inverse[j][r]) * bound[c][j];
-            k = std::max(k, sum);
-        }
-    }
-    const double det_floor = std::fabs(det) * std::pow(1.0 - std::min(k, 1.0), 3);
+    const double det_floor = std::fabs(det) * std::pow(1.0 - std::min(input_error.k, 1.0), 3);
     // D, the magnitude of the determinant's expansion along the first column, and each minor's magnitude.
     double magnitude_d = 0.0;
     glm::dmat3 minor, minor_magnitude;  // minor[i][j] belongs to the inverse's entry (i, j) (glm: [column][row])
@@ -74,19 +65,30 @@ double raster_file_normal_error(const ModelMatrixError& model, const glm::vec3& 
         }
     for (int r = 0; r < 3; ++r) magnitude_d += magnitude[0][r] * minor_magnitude[0][r];
     const double g_det = float_gamma(kDeterminantRoundings) * magnitude_d;
-    if (!(g_det < det_floor)) return 2.0;
+    if (!(g_det < det_floor)) return out;
     // The normal matrix is the inverse's transpose; its entry (row i, column j) is minor[i][j] / det.
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            out.entry[i][j] = minor[i][j] / det;
+            out.magnitude[i][j] = std::fabs(out.entry[i][j]) + input[i][j];  // raster's inverse of its own M_f
+            out.error[i][j] =
+                (float_gamma(kMinorRoundings) * minor_magnitude[i][j] + out.magnitude[i][j] * g_det) /
+                    (det_floor - g_det) +
+                input[i][j];
+        }
+    out.bounded = true;
+    return out;
+}
+
+double raster_file_normal_error(const NormalMatrixError& normal_matrix, const glm::vec3& normal) {
+    if (!normal_matrix.bounded) return 2.0;
     glm::dvec3 exact(0.0), change(0.0);
     const glm::dvec3 n(normal);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            const double entry = minor[i][j] / det;
-            const double entry_f = std::fabs(entry) + input[i][j];  // raster's inverse of its own M_f, at most
-            const double entry_error =
-                (float_gamma(kMinorRoundings) * minor_magnitude[i][j] + entry_f * g_det) / (det_floor - g_det) +
-                input[i][j];
-            exact[i] += entry * n[j];
-            change[i] += entry_error * std::fabs(n[j]) + float_gamma(3) * entry_f * std::fabs(n[j]);
+            exact[i] += normal_matrix.entry[i][j] * n[j];
+            change[i] += normal_matrix.error[i][j] * std::fabs(n[j]) +
+                         float_gamma(3) * normal_matrix.magnitude[i][j] * std::fabs(n[j]);
         }
     return unit_vector_error(glm::length(change), glm::length(exact));
 }

@@ -32,7 +32,16 @@ inline constexpr int kMinorRoundings = 4;
 inline constexpr int kDeterminantRoundings = 8;
 inline constexpr int kNormalizeAttributeRoundings = 5;
 inline constexpr int kCrossRoundingsForNormals = 2;
-double raster_file_normal_error(const ModelMatrixError& model, const glm::vec3& normal);
+// The normal matrix's part, the same for every vertex of a mesh: N's entries, each one's error and the magnitude
+// of raster's (entry[i][j] is row i, column j); `bounded` false where the determinant's noise reaches it.
+struct NormalMatrixError {
+    double entry[3][3] = {};
+    double error[3][3] = {};
+    double magnitude[3][3] = {};
+    bool bounded = false;
+};
+NormalMatrixError raster_normal_matrix_error(const ModelMatrixError& model);
+double raster_file_normal_error(const NormalMatrixError& normal_matrix, const glm::vec3& normal);
 //  - a face normal normalize(cross(b - a, c - a)) from raster's float world positions (within their errors e of
 //    exact): the edges (one difference each, plus the vertices' errors), the cross product (|de1| x| (|e2| + |de2|)
 //    + |e1| x| |de2| + gamma_2 |e1| x| |e2|, x| the cross product with its two products added), and the unit

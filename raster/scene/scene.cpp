@@ -1,4 +1,4 @@
-// Names of the scene's enumerations, shared by the loaders and the command line.
+// Names of the scene's enumerations, shared by the loaders and the command line, and a look-at step's camera.
 #include "raster/scene/scene.h"
 
 #include <algorithm>
@@ -23,6 +23,14 @@ const char* to_string(ShadingMode mode) {
     for (const auto& entry : kShadingNames)
         if (entry.mode == mode) return entry.name;
     return "?";
+}
+
+Camera look_at_camera(const LookAtStep& step) {
+    Camera camera;
+    camera.eye = step.eye;
+    camera.target = step.target;
+    camera.up = step.up;
+    return camera;
 }
 
 const char* to_string(SamplePattern pattern) { return pattern == SamplePattern::grid ? "grid" : "standard"; }

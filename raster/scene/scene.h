@@ -42,6 +42,9 @@ struct Camera {
     float far = 100.0f;
 };
 
+// The camera with a look-at step's eye, target and up: the step places an object as that camera's inverse view.
+Camera look_at_camera(const LookAtStep& step);
+
 // Point light; colour is linear RGB. With `attenuate`, the light's contribution is divided by r^2. With `shadows`,
 // the light casts shadows through a cube shadow map (docs/shadows.md); without, it lights every point it faces.
 struct Light {

@@ -140,11 +140,7 @@ std::optional<std::string> step_problem(const TransformStep& step) {
                 if (!std::isfinite(glm::dot(q, q))) return "a quaternion step is not finite";
                 if (!(glm::dot(q, q) > 0.0)) return "a quaternion step is zero";
             } else if constexpr (std::is_same_v<Step, LookAtStep>) {
-                Camera frame;
-                frame.eye = s.eye;
-                frame.target = s.target;
-                frame.up = s.up;
-                if (const auto problem = camera_problem(frame))
+                if (const auto problem = camera_problem(look_at_camera(s)))
                     return "a lookat step: " + problem->message.substr(problem->message.find(' ') + 1);
             } else {
                 for (int c = 0; c < 4; ++c)
