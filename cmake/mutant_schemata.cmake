@@ -2,15 +2,35 @@
 # behind a runtime switch (RASTER_MUTANT=name), so that one build holds every planted bug. raster_mutants generate
 # writes a copy of each source file that has entries into build/mutant_schemata/, with each find text turned into
 # a switch between the correct code and the bug; the module targets compile the copies instead of the originals,
-# and the copies of headers come first on every include path. The source tree itself is never modified.
+# and a module's include view (cmake/raster_module.cmake) shows the copies of its headers in place of the originals.
+# The source tree itself is never modified.
 #
-#   raster_mutant_schemata_prepare()  before the modules: the include path of the header copies
-#   raster_mutant_schemata_apply()    after every target exists: swaps the sources, adds the switch
+# No include directory and no definition is added: every other file compiles with the production build's own
+# command line and headers, so that when a production build turns into the schemata build in place (tools/
+# plant_bugs.sh --reuse-build), ccache serves it and only the copies and the files including a header copy compile.
+#
+#   raster_mutant_schemata_apply()    after every target exists: swaps the sources and the header views, adds
+#                                     the switch
 set(RASTER_MUTANT_SCHEMATA_DIR ${PROJECT_BINARY_DIR}/mutant_schemata)
 
-macro(raster_mutant_schemata_prepare)
-  include_directories(BEFORE ${RASTER_MUTANT_SCHEMATA_DIR})
-endmacro()
+# The include view of raster/MODULE (a link to the source folder) becomes a folder of links, one per file, the
+# header copies among them linking to their copies.
+function(raster_mutant_header_view module copies)
+  set(view ${PROJECT_BINARY_DIR}/include_views/raster_${module}/raster/${module})
+  if(NOT IS_SYMLINK ${view})
+    message(FATAL_ERROR "${view} is not raster_${module}'s include view link")
+  endif()
+  file(REMOVE ${view})
+  file(MAKE_DIRECTORY ${view})
+  file(GLOB entries RELATIVE ${PROJECT_SOURCE_DIR}/raster/${module} ${PROJECT_SOURCE_DIR}/raster/${module}/*)
+  foreach(entry IN LISTS entries)
+    set(target ${PROJECT_SOURCE_DIR}/raster/${module}/${entry})
+    if("raster/${module}/${entry}" IN_LIST copies)
+      set(target ${RASTER_MUTANT_SCHEMATA_DIR}/raster/${module}/${entry})
+    endif()
+    file(CREATE_LINK ${target} ${view}/${entry} SYMBOLIC)
+  endforeach()
+endfunction()
 
 # Every target defined under DIR (recursively) into the variable OUT.
 function(raster_targets_under dir out)
@@ -46,16 +66,35 @@ function(raster_mutant_schemata_apply)
     COMMENT "Writing the mutant schemata sources from mutants/bugs.txt")
   add_custom_target(raster_mutant_schemata_sources DEPENDS ${outputs})
 
-  # The switch, linked by raster_core so that every module (and the generated copies) reaches it.
+  # The switch, linked through raster_core so that every program linking a module (and so a copy) links it. The
+  # copies include its header by its absolute path; nothing else sees its include directories.
   add_library(raster_mutant_switch STATIC ${PROJECT_SOURCE_DIR}/mutants/switch/raster_mutant_switch.cpp)
-  target_include_directories(raster_mutant_switch PUBLIC ${PROJECT_SOURCE_DIR}/mutants/switch
-                                                          ${RASTER_MUTANT_SCHEMATA_DIR})
-  target_link_libraries(raster_core PUBLIC raster_mutant_switch)
+  target_include_directories(raster_mutant_switch PRIVATE ${PROJECT_SOURCE_DIR}/mutants/switch
+                                                           ${RASTER_MUTANT_SCHEMATA_DIR})
+  target_link_libraries(raster_core PRIVATE raster_mutant_switch)
+
+  # Each header copy replaces its original in its module's include view.
+  set(headers)
+  foreach(file IN LISTS files)
+    if(file MATCHES "^raster/([a-z_]+)/[^/]+\\.h$")
+      list(APPEND headers ${file})
+      list(APPEND header_modules ${CMAKE_MATCH_1})
+    endif()
+  endforeach()
+  if(header_modules)
+    list(REMOVE_DUPLICATES header_modules)
+  endif()
+  foreach(module IN LISTS header_modules)
+    raster_mutant_header_view(${module} "${headers}")
+  endforeach()
 
   # Each source file's module compiles its copy, with the original's compile options.
   foreach(file IN LISTS files)
     if(NOT file MATCHES "\\.cpp$")
-      continue()  # a header: its copy comes first on the include path
+      if(NOT file MATCHES "^raster/[a-z_]+/[^/]+\\.h$")
+        message(FATAL_ERROR "mutants/bugs.txt plants into ${file}, which is neither a module's source nor its header")
+      endif()
+      continue()  # a header: its copy replaced the original in the include view above
     endif()
     if(NOT file MATCHES "^raster/([a-z_]+)/")
       message(FATAL_ERROR "mutants/bugs.txt plants into ${file}, which is in no raster module")

@@ -55,7 +55,10 @@ std::map<std::string, std::string> schemata_sources(const Catalogue& catalogue, 
         try {
             if (!fs::is_regular_file(path))
                 throw CatalogueError(where(catalogue, *sites.front().entry) + " is stale: " + file + " does not exist");
-            out[file] = schemata_source(catalogue, read_file(path), sites, "raster_mutant_switch.h");
+            // The switch by its absolute path: the copies need no include directory of their own, so every
+            // other file of the schemata build compiles with the production build's command line.
+            out[file] = schemata_source(catalogue, read_file(path), sites,
+                                        (fs::absolute(root) / "mutants/switch/raster_mutant_switch.h").lexically_normal().string());
         } catch (const CatalogueError& error) {
             problems += std::string(problems.empty() ? "" : "\nraster_mutants: ") + error.what();
         }

@@ -8,9 +8,10 @@
 
 #include "raster/frame/frame.h"
 #include "raster/geometry/frame_params.h"
-#include "raster/resolve/resolve.h"
 
 namespace raster {
+
+class PixelResolver;  // resolve.h
 
 // What the frame asks of the opaque draw.
 struct OpaqueDraw {

@@ -6,6 +6,7 @@
 
 #include "raster/core/stopwatch.h"
 #include "raster/rasterize/reference_rasterizer.h"
+#include "raster/resolve/resolve.h"
 
 namespace raster {
 

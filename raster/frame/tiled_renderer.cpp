@@ -7,6 +7,7 @@
 
 #include "raster/core/stopwatch.h"
 #include "raster/rasterize/tile_rasterizer.h"
+#include "raster/resolve/resolve.h"
 
 namespace raster {
 namespace {

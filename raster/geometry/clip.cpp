@@ -5,6 +5,10 @@
 #include <cmath>
 
 namespace raster {
+
+const std::array<glm::vec3, 3> kCornerBarycentrics = {
+    glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
+
 namespace {
 
 enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };

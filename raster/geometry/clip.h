@@ -27,8 +27,7 @@ struct ClipVertex {
 };
 
 // The barycentric coordinates of a triangle's own vertices a, b, c in it.
-inline const std::array<glm::vec3, 3> kCornerBarycentrics = {
-    glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
+extern const std::array<glm::vec3, 3> kCornerBarycentrics;
 
 // In exact arithmetic each plane adds at most one vertex to a convex polygon (3 + 6 = 9); rounding can make a
 // sliver numerically non-convex, so there is room for more, and a polygon that would overflow is dropped.

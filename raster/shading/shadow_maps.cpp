@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "raster/transform/cube_faces.h"
+
 namespace raster {
 
 ShadowCube& ShadowMaps::add_cube(size_t light) {

@@ -8,10 +8,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "raster/transform/cube_faces.h"
 #include "raster/scene/scene.h"
 
 namespace raster {
+
+struct CubeFace;  // cube_faces.h
 
 // One light's cube map.
 struct ShadowCube {
