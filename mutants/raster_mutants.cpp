@@ -102,19 +102,21 @@ int plan(const Catalogue& catalogue, const fs::path& ctest_json, const fs::path&
     const Coverage coverage = read_coverage(ctest_json, costs, traces);
     std::cerr << "raster_mutants: " << coverage.traces << " traces, " << coverage.unattributed
               << " from processes no test started directly or through its children\n";
-    // One line per entry: name, comparison test, tests reaching its site, "-I" list of the tests to run, and
-    // whether the comparison case reaches the site.
+    // One line per entry: name, comparison test, tests reaching its site, the rounds of tests to run (each a "-I"
+    // list, rounds separated by ';'), and whether the comparison case reaches the site.
     for (const Entry& entry : catalogue.entries) {
         const std::string first = comparison_test_name(case_of(entry));
-        const std::vector<int> chosen = select_tests(coverage, entry.name, first, budget);
+        const std::vector<std::vector<int>> rounds = select_test_rounds(coverage, entry.name, first, budget);
         const auto reaching = coverage.tests_of_site.find(entry.name);
         const size_t reached = reaching == coverage.tests_of_site.end() ? 0 : reaching->second.size();
         std::string numbers;
         bool first_reaches = false;
-        for (int test : chosen) {
-            if (!numbers.empty()) numbers += ',';
-            numbers += std::to_string(coverage.tests[test].number);
-            first_reaches = first_reaches || coverage.tests[test].name == first;
+        for (const std::vector<int>& round : rounds) {
+            if (!numbers.empty()) numbers += ';';
+            for (size_t i = 0; i < round.size(); ++i) {
+                numbers += (i ? "," : "") + std::to_string(coverage.tests[round[i]].number);
+                first_reaches = first_reaches || coverage.tests[round[i]].name == first;
+            }
         }
         std::cout << entry.name << '\t' << first << '\t' << reached << '\t' << (numbers.empty() ? "-" : numbers) << '\t'
                   << (first_reaches ? "reaches" : "does-not-reach") << '\n';

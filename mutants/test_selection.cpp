@@ -72,28 +72,28 @@ Coverage read_coverage(const fs::path& ctest_json, const fs::path& costs, const 
     return coverage;
 }
 
-std::vector<int> select_tests(const Coverage& coverage, const std::string& site, const std::string& first_test,
-                              double budget_seconds) {
+std::vector<std::vector<int>> select_test_rounds(const Coverage& coverage, const std::string& site,
+                                                 const std::string& first_test, double budget_seconds) {
     std::vector<int> reaching;
     if (auto found = coverage.tests_of_site.find(site); found != coverage.tests_of_site.end())
         reaching.assign(found->second.begin(), found->second.end());
-    std::vector<int> chosen;
-    double spent = 0.0;
-    for (auto it = reaching.begin(); it != reaching.end(); ++it)
-        if (coverage.tests[*it].name == first_test) {
-            chosen.push_back(*it);
-            spent += coverage.tests[*it].seconds;
-            reaching.erase(it);
-            break;
-        }
     std::stable_sort(reaching.begin(), reaching.end(),
                      [&](int a, int b) { return coverage.tests[a].seconds < coverage.tests[b].seconds; });
+    const auto first = std::find_if(reaching.begin(), reaching.end(),
+                                    [&](int test) { return coverage.tests[test].name == first_test; });
+    if (first != reaching.end()) std::rotate(reaching.begin(), first, first + 1);
+    std::vector<std::vector<int>> rounds;
+    double spent = 0.0;
     for (int test : reaching) {
-        if (budget_seconds >= 0 && !chosen.empty() && spent + coverage.tests[test].seconds > budget_seconds) break;
-        chosen.push_back(test);
+        if (rounds.empty() || (budget_seconds >= 0 && !rounds.back().empty() &&
+                               spent + coverage.tests[test].seconds > budget_seconds)) {
+            rounds.emplace_back();
+            spent = 0.0;
+        }
+        rounds.back().push_back(test);
         spent += coverage.tests[test].seconds;
     }
-    return chosen;
+    return rounds;
 }
 
 }  // namespace raster::mutants

@@ -27,10 +27,12 @@ struct Coverage {
 Coverage read_coverage(const std::filesystem::path& ctest_json, const std::filesystem::path& costs,
                        const std::filesystem::path& traces);
 
-// The tests a planted bug runs: the entry's own comparison case first when it reaches the site, then the other
-// tests that reach it, quickest first, until their expected time passes `budget_seconds` (every one when the budget
-// is negative). Indices into coverage.tests.
-std::vector<int> select_tests(const Coverage& coverage, const std::string& site, const std::string& first_test,
-                              double budget_seconds);
+// The tests a planted bug runs, in rounds: the entry's own comparison case first when it reaches the site, then
+// the other tests that reach it, quickest first, each round closed when its expected time would pass
+// `budget_seconds` (one round of every test when the budget is negative). A round holds at least one test, and the
+// rounds hold every test that reaches the site: a bug that no round's tests catch was run against all of them.
+// Indices into coverage.tests.
+std::vector<std::vector<int>> select_test_rounds(const Coverage& coverage, const std::string& site,
+                                                 const std::string& first_test, double budget_seconds);
 
 }  // namespace raster::mutants

@@ -18,18 +18,21 @@ usage: tools/plant_bugs.sh [--build-dir DIR [--reuse-build]] [--production RASTE
    with RASTER_MUTANT_TRACE recording, for each test's processes, which bugs' code ran.
 4. For each bug: RASTER_MUTANT=NAME ctest on the tests that reach its code, its own comparison case first (the
    ctest case that compares its scene and flags with the oracle), then the quickest others until their time in the
-   correct run passes the budget (default 4 s; --all-tests: every test that reaches it). A test that never runs a
-   bug's code cannot fail because of it (every check is seeded), so the tests left out could not have caught it.
+   correct run passes the budget (default 4 s; --all-tests: every test that reaches it); when none fails, the next
+   quickest round within the budget, and so on until one fails or every test that reaches it has run. A test that
+   never runs a bug's code cannot fail because of it (every check is seeded), so the tests left out could not have
+   caught it.
 
 stdout gets the matrix as Markdown: per bug, the tests that reach it, how many ran, which failed; then per test
 suite, how many bugs it caught. Progress goes to stderr.
 
   --build-dir DIR      the schemata build's folder (reused: a second run rebuilds only what changed)
-  --reuse-build        DIR is a normal build: reconfigure it in place as the schemata build. With ccache as its
-                       compiler launcher, only the files the switches change are compiled again (CI does this)
+  --reuse-build        DIR is a normal build: reconfigure it in place as the schemata build. Every other file keeps
+                       its command line, so only the copies and the files including a header copy compile again
+                       (CI does this)
   --production RASTER  also check that the schemata build with no bug on gives RASTER's bytes
   --only NAME          run only this entry (repeatable)
-  --budget SECONDS     expected test seconds per bug after its comparison case (default 4)
+  --budget SECONDS     expected test seconds of each round of a bug (default 4)
   --all-tests          run every test that reaches each bug (the full matrix; slow)
   --jobs N             build and test jobs (default 2)
   --list               print the catalogue's entries (name: bug) and exit
@@ -156,15 +159,23 @@ index=0
 for name in "${selected[@]}"; do
   index=$((index + 1))
   bug_start=$(date +%s)
-  numbers=${to_run[$name]}
-  failed=() ran=0
-  if [[ $numbers != - ]]; then
-    ran=$(tr ',' '\n' <<<"$numbers" | wc -l)
-    RASTER_MUTANT=$name ctest --test-dir "$build" -j "$jobs" --timeout 120 -I "0,0,0,$numbers" \
-      >"$logs/bug-$name.log" 2>&1 || true
-    mapfile -t failed < <(sed -n '/The following tests FAILED/,$p' "$logs/bug-$name.log" |
-      sed -n -E 's/^[[:space:]]+[0-9]+ - (.*) \((Failed|Timeout|SEGFAULT|Subprocess aborted|Child aborted|Exception|[A-Za-z ]+)\)$/\1/p' |
-      sed -E 's/  # .*$//')
+  failed=() ran=0 rounds=0
+  if [[ ${to_run[$name]} != - ]]; then
+    # Round after round (each within the budget) until a test fails or every test that reaches the bug has run.
+    IFS=';' read -r -a round_list <<<"${to_run[$name]}"
+    : >"$logs/bug-$name.log"
+    for numbers in "${round_list[@]}"; do
+      rounds=$((rounds + 1))
+      ran=$((ran + $(tr ',' '\n' <<<"$numbers" | wc -l)))
+      RASTER_MUTANT=$name ctest --test-dir "$build" -j "$jobs" --timeout 120 -I "0,0,0,$numbers" \
+        >"$logs/bug-$name.round.log" 2>&1 || true
+      cat "$logs/bug-$name.round.log" >>"$logs/bug-$name.log"
+      mapfile -t failed < <(sed -n '/The following tests FAILED/,$p' "$logs/bug-$name.round.log" |
+        sed -n -E 's/^[[:space:]]+[0-9]+ - (.*) \((Failed|Timeout|SEGFAULT|Subprocess aborted|Child aborted|Exception|[A-Za-z ]+)\)$/\1/p' |
+        sed -E 's/  # .*$//')
+      ((${#failed[@]})) && break
+    done
+    rm -f "$logs/bug-$name.round.log"
   fi
   comparison_cell="${comparison[$name]}"
   if [[ ${reaches[$name]} != reaches ]]; then comparison_cell+=" (does not reach it)"
@@ -186,6 +197,7 @@ for name in "${selected[@]}"; do
     outcome="NOT CAUGHT by the $ran tests run of the ${reached[$name]} that reach it"
   else
     outcome="caught by ${#failed[@]} of $ran tests run (${reached[$name]} reach it)"
+    ((rounds > 1)) && outcome+=" in round $rounds"
   fi
   rows+=("| $name | ${family[$name]} | $comparison_cell | ${reached[$name]} | $ran | ${#failed[@]} | ${shown:-none} |")
   echo "plant_bugs: [$index/${#selected[@]}] $name: $outcome, $(($(date +%s) - bug_start)) s" >&2

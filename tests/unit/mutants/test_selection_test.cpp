@@ -1,4 +1,4 @@
-// Test selection: parameterised names read without their comment, traces attributed to the test whose command started the process, and the budget applied.
+// Test selection: parameterised names read without their comment, traces attributed to the test whose command started the process, and the rounds the budget makes.
 #include "mutants/test_selection.h"
 
 #include <gtest/gtest.h>
@@ -27,9 +27,13 @@ struct Fixture {
         dir.write("traces/4.trace", "command /usr/bin/stray\nsite s\n");
         coverage = read_coverage(dir / "tests.json", dir / "costs.txt", dir / "traces");
     }
-    std::vector<std::string> names(const std::vector<int>& chosen) const {
+    // Each round's test names, rounds separated by "|".
+    std::vector<std::string> names(const std::vector<std::vector<int>>& rounds) const {
         std::vector<std::string> out;
-        for (int test : chosen) out.push_back(coverage.tests[test].name);
+        for (const std::vector<int>& round : rounds) {
+            if (!out.empty()) out.push_back("|");
+            for (int test : round) out.push_back(coverage.tests[test].name);
+        }
         return out;
     }
 };
@@ -44,17 +48,21 @@ TEST(TestSelection, attributesEachTraceToTheTestThatStartedItsProcess) {
     EXPECT_DOUBLE_EQ(f.coverage.tests[2].seconds, 1.5);
 }
 
-TEST(TestSelection, runsTheComparisonFirstThenTheQuickestWithinTheBudget) {
+TEST(TestSelection, runsTheComparisonFirstThenTheQuickestInRoundsWithinTheBudget) {
     Fixture f;
-    EXPECT_EQ(f.names(select_tests(f.coverage, "s", "Slow.compare", 3.5)),
-              (std::vector<std::string>{"Slow.compare", "Fast.one"}));
-    EXPECT_EQ(f.names(select_tests(f.coverage, "s", "Slow.compare", -1)),
+    // The first round within the budget; the tests it leaves out come in later rounds, so that a bug the first
+    // round misses still meets every test that reaches it.
+    EXPECT_EQ(f.names(select_test_rounds(f.coverage, "s", "Slow.compare", 3.5)),
+              (std::vector<std::string>{"Slow.compare", "Fast.one", "|", "Mid/Two.case/p"}));
+    EXPECT_EQ(f.names(select_test_rounds(f.coverage, "s", "Slow.compare", -1)),
               (std::vector<std::string>{"Slow.compare", "Fast.one", "Mid/Two.case/p"}));
     // A comparison that does not reach the site is not run: it cannot fail because of it.
-    EXPECT_EQ(f.names(select_tests(f.coverage, "t", "Mid/Two.case/p", 10)), (std::vector<std::string>{"Slow.compare"}));
-    // At least one test runs whatever the budget.
-    EXPECT_EQ(f.names(select_tests(f.coverage, "s", "none", 0)), (std::vector<std::string>{"Fast.one"}));
-    EXPECT_TRUE(select_tests(f.coverage, "unreached", "Slow.compare", 10).empty());
+    EXPECT_EQ(f.names(select_test_rounds(f.coverage, "t", "Mid/Two.case/p", 10)),
+              (std::vector<std::string>{"Slow.compare"}));
+    // At least one test a round whatever the budget, quickest first.
+    EXPECT_EQ(f.names(select_test_rounds(f.coverage, "s", "none", 0)),
+              (std::vector<std::string>{"Fast.one", "|", "Mid/Two.case/p", "|", "Slow.compare"}));
+    EXPECT_TRUE(select_test_rounds(f.coverage, "unreached", "Slow.compare", 10).empty());
 }
 
 }  // namespace
