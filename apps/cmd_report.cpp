@@ -41,7 +41,8 @@ void register_report_flags(CLI::App& app, ReportFlags& flags) {
     CLI::App* report = app.add_subcommand(
         "report", "Compare scenes with the Embree oracle and write an HTML report (index.html, summary.json, images).");
     report->footer(
-        "Inputs are scene files or directories (every .yaml, .yml and .json file in them, sorted); the default is\n"
+        "Inputs are scene files, mesh files (.obj, .ply, framed by a default camera and light) or directories (every\n"
+        ".yaml, .yml and .json file in them, sorted: the meshes beside a scene are not scenes); the default is\n"
         "corpus/scenes. Exit code 0 when no scene has a genuine disagreement, 1 when one has, 2 on bad input, 3 when an\n"
         "output cannot be written or Embree fails. Example: raster report corpus/scenes -o report && open report/index.html");
     report->add_option("inputs", flags.inputs, "Scene files or directories (default: corpus/scenes)");

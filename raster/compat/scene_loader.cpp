@@ -6,9 +6,11 @@
 
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
+#include "raster/compat/mesh_scene.h"
 #include "raster/compat/seed_scene_readers.h"
 #include "raster/formats/document.h"
 #include "raster/formats/document_reader.h"
+#include "raster/formats/mesh_file.h"
 #include "raster/formats/scene_files.h"
 #include "raster/scene/validation.h"
 
@@ -20,6 +22,7 @@ const char* to_string(SceneFormat format) {
         case SceneFormat::seed003: return "seed003";
         case SceneFormat::seed000: return "seed000";
         case SceneFormat::seed001: return "seed001";
+        case SceneFormat::mesh: return "mesh";
     }
     return "?";
 }
@@ -50,9 +53,22 @@ FileRequest seed000_request(const Seed000Config& config) {
     return request;
 }
 
+// A mesh file's scene, from its loaded mesh.
+SceneFile mesh_scene_file(MeshData data, const std::filesystem::path& path) {
+    const DocumentReader reader(path.string());
+    SceneFiles files(path, reader);
+    SceneFile out;
+    out.format = SceneFormat::mesh;
+    read_mesh_file_scene(std::move(data), path, files.loaders(), out.scene);
+    finish_scene_textures(out.scene);
+    validate_scene(out.scene);
+    return out;
+}
+
 }  // namespace
 
 SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path) {
+    if (is_mesh_file(path)) return mesh_scene_file(parse_mesh_file(text, path), path);
     const std::string name = path.string();
     const Document document = parse_document(text, name);
     const Node& root = document.root();
@@ -76,6 +92,7 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
             break;
         }
         case SceneFormat::seed001: read_seed001_scene(root, reader, loaders.mesh, scene); break;
+        case SceneFormat::mesh: break;  // told by the extension before any parse; detect_format never says it
     }
     finish_scene_textures(scene);
     validate_scene(scene);
@@ -83,6 +100,7 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
 }
 
 SceneFile load_scene_file(const std::filesystem::path& path) {
+    if (is_mesh_file(path)) return mesh_scene_file(load_mesh_file(path), path);  // the mesh readers' own size caps
     return parse_scene_file(read_file_bytes(path, kMaxSceneFileBytes), path);
 }
 
@@ -93,7 +111,9 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& path, Scen
 }
 
 Scene load_scene(const std::filesystem::path& path, SceneFormat* format) {
-    return parse_scene(read_file_bytes(path, kMaxSceneFileBytes), path, format);
+    SceneFile file = load_scene_file(path);
+    if (format) *format = file.format;
+    return std::move(file.scene);
 }
 
 }  // namespace raster

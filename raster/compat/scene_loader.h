@@ -19,10 +19,12 @@ enum class SceneFormat {
     seed003,  // the seed 003 course's JSON scene (eye / lookat / fov_angle / meshes[].obj)
     seed000,  // the seed 000 course's YAML config (task / resolution / obj / camera / transforms / lights)
     seed001,  // the seed 001 course's balboa JSON scene (camera / background / objects)
+    mesh,     // a mesh file alone (.obj or .ply), framed by a default camera and light (mesh_scene.h)
 };
 
-// Which format a parsed document is, by its top-level keys: seed 000 with `task`; seed 001 with `camera` and
-// `objects`; seed 003 with `fov_angle` or `lookat`; else raster.
+// Which format a scene file is: a mesh by its extension (.obj, .ply); else, parsed as a document, by its top-level
+// keys: seed 000 with `task`; seed 001 with `camera` and `objects`; seed 003 with `fov_angle` or `lookat`; else
+// raster.
 const char* to_string(SceneFormat format);
 
 // What a scene file asks of `raster render` besides drawing its scene.
