@@ -21,8 +21,14 @@ function(raster_mutant_header_view module copies)
     message(FATAL_ERROR "${view} is not raster_${module}'s include view link")
   endif()
   file(REMOVE ${view})
+  if(IS_SYMLINK ${view} OR EXISTS ${view})
+    # Never write links through it: it leads into the source folder.
+    message(FATAL_ERROR "cannot remove ${view}, raster_${module}'s include view link")
+  endif()
   file(MAKE_DIRECTORY ${view})
-  file(GLOB entries RELATIVE ${PROJECT_SOURCE_DIR}/raster/${module} ${PROJECT_SOURCE_DIR}/raster/${module}/*)
+  # Re-globbed at every build: a header added to the module reaches the view.
+  file(GLOB entries CONFIGURE_DEPENDS RELATIVE ${PROJECT_SOURCE_DIR}/raster/${module}
+       ${PROJECT_SOURCE_DIR}/raster/${module}/*)
   foreach(entry IN LISTS entries)
     set(target ${PROJECT_SOURCE_DIR}/raster/${module}/${entry})
     if("raster/${module}/${entry}" IN_LIST copies)
@@ -87,6 +93,25 @@ function(raster_mutant_schemata_apply)
   foreach(module IN LISTS header_modules)
     raster_mutant_header_view(${module} "${headers}")
   endforeach()
+  # A header that had a copy and has none now is seen through the view as its original again, which is older than
+  # the objects that compiled the copy, so nothing would recompile them: every object goes (as when the build turns
+  # back into a normal one, CMakeLists.txt).
+  set(header_list ${RASTER_MUTANT_SCHEMATA_DIR}/header_copies.txt)
+  if(EXISTS ${header_list})
+    file(STRINGS ${header_list} previous_headers)
+    foreach(header IN LISTS previous_headers)
+      if(NOT header IN_LIST headers)
+        file(GLOB_RECURSE stale_objects ${PROJECT_BINARY_DIR}/*.o)
+        if(stale_objects)
+          file(REMOVE ${stale_objects})
+        endif()
+        message(STATUS "${header} has no copy any more: removed the schemata build's objects")
+        break()
+      endif()
+    endforeach()
+  endif()
+  string(REPLACE ";" "\n" header_text "${headers}")
+  file(WRITE ${header_list} "${header_text}\n")
 
   # Each source file's module compiles its copy, with the original's compile options.
   foreach(file IN LISTS files)

@@ -85,8 +85,7 @@ std::vector<std::vector<int>> select_test_rounds(const Coverage& coverage, const
     std::vector<std::vector<int>> rounds;
     double spent = 0.0;
     for (int test : reaching) {
-        if (rounds.empty() || (budget_seconds >= 0 && !rounds.back().empty() &&
-                               spent + coverage.tests[test].seconds > budget_seconds)) {
+        if (rounds.empty() || (budget_seconds >= 0 && spent + coverage.tests[test].seconds > budget_seconds)) {
             rounds.emplace_back();
             spent = 0.0;
         }

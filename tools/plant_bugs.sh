@@ -107,7 +107,10 @@ fi
 
 echo "plant_bugs: building the schemata build in $build${generator[*]:+ (Ninja)}${launcher[*]:+ (ccache)}" >&2
 build_start=$(date +%s)
-cmake --build "$build" -j "$jobs" >"$logs/build.log" 2>&1 ||
+# The copies first: the files that include a header copy see it through their module's include view, a link that
+# ninja does not know the generator writes, so only a build that starts after the copies are written sees them new.
+cmake --build "$build" -j "$jobs" --target raster_mutant_schemata_sources >"$logs/build.log" 2>&1 &&
+cmake --build "$build" -j "$jobs" >>"$logs/build.log" 2>&1 ||
   { grep -m 10 -E 'error|FAILED' "$logs/build.log" >&2 || tail -n 30 "$logs/build.log" >&2; die "the schemata build fails"; }
 echo "plant_bugs: schemata build done in $(($(date +%s) - build_start)) s" >&2
 unclean=()
@@ -173,7 +176,7 @@ for name in "${selected[@]}"; do
       mapfile -t failed < <(sed -n '/The following tests FAILED/,$p' "$logs/bug-$name.round.log" |
         sed -n -E 's/^[[:space:]]+[0-9]+ - (.*) \((Failed|Timeout|SEGFAULT|Subprocess aborted|Child aborted|Exception|[A-Za-z ]+)\)$/\1/p' |
         sed -E 's/  # .*$//')
-      ((${#failed[@]})) && break
+      if ((${#failed[@]})); then break; fi
     done
     rm -f "$logs/bug-$name.round.log"
   fi
@@ -197,7 +200,7 @@ for name in "${selected[@]}"; do
     outcome="NOT CAUGHT by the $ran tests run of the ${reached[$name]} that reach it"
   else
     outcome="caught by ${#failed[@]} of $ran tests run (${reached[$name]} reach it)"
-    ((rounds > 1)) && outcome+=" in round $rounds"
+    if ((rounds > 1)); then outcome+=" in round $rounds"; fi
   fi
   rows+=("| $name | ${family[$name]} | $comparison_cell | ${reached[$name]} | $ran | ${#failed[@]} | ${shown:-none} |")
   echo "plant_bugs: [$index/${#selected[@]}] $name: $outcome, $(($(date +%s) - bug_start)) s" >&2

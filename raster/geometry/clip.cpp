@@ -6,7 +6,7 @@
 
 namespace raster {
 
-const std::array<glm::vec3, 3> kCornerBarycentrics = {
+extern const std::array<glm::vec3, 3> kCornerBarycentrics = {
     glm::vec3(1.0f, 0.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f), glm::vec3(0.0f, 0.0f, 1.0f)};
 
 namespace {
