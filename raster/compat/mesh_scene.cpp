@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -11,35 +13,36 @@
 
 #include "raster/core/errors.h"
 #include "raster/formats/document.h"
+#include "raster/scene/validation.h"
 
 namespace raster {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+constexpr double kPi = 3.14159265358979323846;
 constexpr float kFovYDegrees = 45.0f;
-constexpr float kMargin = 1.05f;  // the bounding sphere's radius is framed as 5% larger
+constexpr double kMargin = 1.05;  // the bounding sphere's radius is framed as 5% larger
 
 // From the centre towards the eye: 30 degrees above the horizontal, turned 30 degrees from +z towards +x.
-glm::vec3 view_direction() {
-    const float elevation = 30.0f * kPi / 180.0f, azimuth = 30.0f * kPi / 180.0f;
+glm::dvec3 view_direction() {
+    const double elevation = kPi / 6.0, azimuth = kPi / 6.0;
     return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)};
 }
 
 }  // namespace
 
-Camera framing_camera(const glm::vec3& centre, float radius, float aspect) {
-    if (!(radius > 0.0f)) radius = 1.0f;
+Camera framing_camera(const glm::vec3& centre, float radius_in, float aspect) {
+    const double radius = radius_in > 0.0f ? radius_in : 1.0;
     // The sphere fits a field of view whose half-angle is h when the eye is radius / sin(h) from its centre.
-    const float half_y = 0.5f * kFovYDegrees * kPi / 180.0f;
-    const float half_x = std::atan(aspect * std::tan(half_y));
-    const float distance = kMargin * radius / std::sin(std::min(half_y, half_x));
+    const double half_y = 0.5 * kFovYDegrees * kPi / 180.0;
+    const double half_x = std::atan(aspect * std::tan(half_y));
+    const double distance = kMargin * radius / std::sin(std::min(half_y, half_x));
     Camera camera;
-    camera.eye = centre + distance * view_direction();
+    camera.eye = glm::vec3(glm::dvec3(centre) + distance * view_direction());
     camera.target = centre;
     camera.up = {0.0f, 1.0f, 0.0f};
     camera.fov_y_degrees = kFovYDegrees;
-    camera.near = 0.9f * (distance - kMargin * radius);  // distance > 2.7 radius: near > 0
-    camera.far = 1.1f * (distance + kMargin * radius);
+    camera.near = static_cast<float>(0.9 * (distance - kMargin * radius));  // distance > 2.7 radius: near > 0
+    camera.far = static_cast<float>(1.1 * (distance + kMargin * radius));
     return camera;
 }
 
@@ -61,18 +64,28 @@ void read_mesh_file_scene(MeshData data, const std::filesystem::path& path, cons
     if (mesh.data.triangles.empty()) throw InputError(scene.path, 0, 0, "the mesh has no triangles to render");
     files.obj_materials(Node::undefined(), mesh.source, mesh, std::nullopt);
 
-    glm::vec3 lo = mesh.data.positions[mesh.data.triangles.front().v[0]], hi = lo;
+    // In double: a float sum or length of coordinates near float's limit would overflow.
+    glm::dvec3 lo(mesh.data.positions[mesh.data.triangles.front().v[0]]), hi = lo;
     for (const TriangleIndices& triangle : mesh.data.triangles)
         for (const uint32_t v : triangle.v) {
-            lo = glm::min(lo, mesh.data.positions[v]);
-            hi = glm::max(hi, mesh.data.positions[v]);
+            lo = glm::min(lo, glm::dvec3(mesh.data.positions[v]));
+            hi = glm::max(hi, glm::dvec3(mesh.data.positions[v]));
         }
-    const glm::vec3 centre = 0.5f * (lo + hi);
-    float radius = 0.0f;
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    double radius = 0.0;
     for (const TriangleIndices& triangle : mesh.data.triangles)
-        for (const uint32_t v : triangle.v) radius = std::max(radius, glm::length(mesh.data.positions[v] - centre));
+        for (const uint32_t v : triangle.v)
+            radius = std::max(radius, glm::length(glm::dvec3(mesh.data.positions[v]) - centre));
     const float aspect = static_cast<float>(scene.settings.width) / static_cast<float>(scene.settings.height);
-    scene.camera = framing_camera(centre, radius, aspect);
+    scene.camera = framing_camera(glm::vec3(centre), static_cast<float>(radius), aspect);
+    // A camera the file never wrote is not the user's to fix: say what about the mesh makes it unusable.
+    if (const std::optional<CameraProblem> problem = camera_problem(scene.camera)) {
+        char extent[96];
+        std::snprintf(extent, sizeof extent, "radius %g, its centre %g from the origin", radius, glm::length(centre));
+        throw InputError(scene.path, 0, 0,
+                         std::string("the mesh's bounding sphere (") + extent + ") cannot be framed by a float camera (" +
+                             problem->message + "); place it in a scene with a camera of its own");
+    }
     scene.lights = {framing_light(scene.camera)};
     scene.meshes.push_back(std::move(mesh));
 }

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "raster/core/unit_vector.h"
 #include "raster/transform/model_matrix.h"
 #include "raster/transform/transform.h"
 
@@ -26,10 +27,9 @@ void average_face_normals(const std::vector<glm::vec3>& world, const std::vector
         const glm::vec3& a = world[first_vertex + tri.v[0]];
         const glm::vec3& b = world[first_vertex + tri.v[1]];
         const glm::vec3& c = world[first_vertex + tri.v[2]];
-        const glm::vec3 n = glm::cross(b - a, c - a);
-        const float length = glm::length(n);
-        if (!(length > 0.0f)) continue;  // degenerate faces have no direction to contribute
-        for (uint32_t corner : tri.v) normals[first_vertex + corner] += n / length;
+        const glm::vec3 n = unit_or_zero(glm::cross(b - a, c - a));  // of a face of any size (unit_vector.h)
+        if (n == glm::vec3(0.0f)) continue;  // degenerate faces have no direction to contribute
+        for (uint32_t corner : tri.v) normals[first_vertex + corner] += n;
     }
     for (uint32_t i = 0; i < vertex_count; ++i) {
         glm::vec3& n = normals[first_vertex + i];

@@ -17,11 +17,6 @@ bool any_mesh_has_parts(const Scene& scene) {
 
 }  // namespace
 
-glm::vec3 unit_or_zero(const glm::vec3& v) {
-    const float length = glm::length(v);
-    return length > 0.0f ? v / length : glm::vec3(0.0f);
-}
-
 SurfaceLookup::SurfaceLookup(const Scene& scene, const TransformedScene& geometry, const ShadowMaps* shadows)
     : scene_(scene), geometry_(geometry) {
     if (any_mesh_has_parts(scene)) {

@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "raster/core/unit_vector.h"
 #include "raster/geometry/vertex_stage.h"
 #include "raster/scene/scene.h"
 #include "raster/shading/lighting.h"
@@ -17,9 +18,6 @@
 namespace raster {
 
 class ShadowMaps;  // shadow_maps.h
-
-// v / |v|, or zero for a zero vector.
-glm::vec3 unit_or_zero(const glm::vec3& v);
 
 // Holds pointers into `scene`, `geometry` and `shadows`, which must outlive it. Shadows are looked up only in a lit
 // shading mode with some light casting shadows; textures only in a textured scene; per-triangle materials only when

@@ -1,9 +1,12 @@
 // A mesh file alone on the command line: `raster render teapot.obj` draws the whole teapot inside the default
-// 640 x 480 image, large, and a mesh file with nothing to draw is a clear error (exit 2) naming the file.
+// 640 x 480 image, large, the same bytes at any power-of-two size, and a mesh file with nothing to draw is a clear
+// error (exit 2) naming the file.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -38,14 +41,53 @@ TEST(MeshFileCli, rendersTheWholeMeshLargeInTheDefaultImage) {
             left = std::min(left, x), right = std::max(right, x);
             top = std::min(top, y), bottom = std::max(bottom, y);
         }
-    // Nothing cut off at the image's edges, and the teapot large in it: the sphere through its farthest vertex
-    // spans 95% of the height, and the teapot, wider than tall, more than half the width.
+    // Nothing cut off at the image's edges, and the teapot large in it. Its sphere through the farthest vertex is
+    // framed to 1/1.05 of the height; the teapot, wider than tall, spans more than half the width and, seen from
+    // 30 degrees up, 48% of the height as rendered: 40% is a floor well above a mesh framed small, well below that.
     EXPECT_GT(left, 0);
     EXPECT_LT(right, 639);
     EXPECT_GT(top, 0);
     EXPECT_LT(bottom, 479);
     EXPECT_GT(right - left, 640 / 2) << "left " << left << ", right " << right;
     EXPECT_GT(bottom - top, 480 * 4 / 10) << "top " << top << ", bottom " << bottom;
+}
+
+// A mesh scaled by a power of two, with its framing camera and light, is the same scene at another size: every
+// product and quotient of the pipeline scales exactly, so the bytes must be the same. At 2^40 and 2^60 the faces'
+// cross products pass float's squared range (before unit_vector.h, the teapot went unlit), at 2^-40 and 2^-60 they
+// fall under it.
+TEST(MeshFileCli, aMeshScaledByAPowerOfTwoRendersTheSameBytes) {
+    TempDir dir;
+    const auto render = [&](const std::filesystem::path& mesh, const std::string& name) {
+        const std::filesystem::path image = dir / name;
+        const auto run = run_raster({"render", mesh.string(), "-o", image.string()});
+        EXPECT_EQ(run.code, 0) << run.err;
+        std::ifstream in(image, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::filesystem::path teapot = kSource / "corpus/meshes/teapot.obj";
+    const std::string unit = render(teapot, "unit.ppm");
+    ASSERT_GT(unit.size(), 640u * 480u * 3u);
+    std::ifstream in(teapot);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (const int exponent : {40, -40, 60, -60}) {
+        std::istringstream lines(text);
+        std::ostringstream scaled;
+        scaled.precision(9);  // a float's value, exactly
+        for (std::string line; std::getline(lines, line);) {
+            if (line.rfind("v ", 0) != 0) {
+                scaled << line << '\n';
+                continue;
+            }
+            std::istringstream words(line.substr(2));
+            float x, y, z;
+            words >> x >> y >> z;
+            scaled << "v " << std::ldexp(x, exponent) << ' ' << std::ldexp(y, exponent) << ' ' << std::ldexp(z, exponent)
+                   << '\n';
+        }
+        const auto mesh = dir.write("teapot" + std::to_string(exponent) + ".obj", scaled.str());
+        EXPECT_TRUE(render(mesh, "scaled.ppm") == unit) << "2^" << exponent;
+    }
 }
 
 TEST(MeshFileCli, aMeshWithNothingToDrawExitsTwoNamingTheFile) {

@@ -45,7 +45,7 @@ TEST(MeshScene, framingHoldsTheBoundingSphereInTheNarrowerFieldWithFivePercentTo
         {{-1, -1, -1}, {1, 1, 1}, 0.5f},              // a tall image: the horizontal field is the narrower
         {{0, 0, 0}, {10, 0.5f, 3}, 2.0f},             // long and flat
         {{-3, 0, -3}, {3, 0, 3}, 1.0f},               // a floor of no thickness
-        {{1e4f, 2e4f, -5e3f}, {1e4f + 2, 2e4f + 1, -5e3f + 4}, 1.0f},  // far from the origin
+        {{1e4f, 2e4f, -5e3f}, {1e4f + 2, 2e4f + 1, -5e3f + 4}, 1.5f},  // far from the origin
     };
     for (const Box& box : boxes) {
         SCOPED_TRACE(testing::Message() << "aspect " << box.aspect << ", lo " << box.lo.x << ", hi " << box.hi.x);
@@ -55,8 +55,10 @@ TEST(MeshScene, framingHoldsTheBoundingSphereInTheNarrowerFieldWithFivePercentTo
         const Camera camera = framing_camera(glm::vec3(centre), static_cast<float>(radius), box.aspect);
         const glm::dvec3 to_eye = glm::dvec3(camera.eye) - centre;
         const double distance = glm::length(to_eye);
-        // The camera is in float: each coordinate of the eye is rounded to within |eye| 2^-24, which moves the
-        // directions and distances below by that over the distance; 1e-6 more for the float sines and products.
+        // The camera is worked out in double and stored in float: each coordinate of the eye is rounded by at most
+        // |eye| 2^-24, so the vector to the eye moves by at most sqrt(3) |eye| 2^-24, and a component of it over
+        // the distance (numerator and denominator both moved) by at most twice that over the distance: 2 sqrt(3)
+        // < 4. 1e-6 more for the double arithmetic and the target's own rounding.
         const double tolerance = 1e-6 + 4.0 * std::ldexp(glm::length(glm::dvec3(camera.eye)), -24) / distance;
         // Looking at the centre from 30 degrees up and 30 degrees right of +z.
         EXPECT_NEAR(glm::length(glm::dvec3(camera.target) - centre), 0.0, 1e-6 * (1.0 + glm::length(centre)));
@@ -130,7 +132,34 @@ TEST(MeshScene, aPlyFileInMemoryKeepsItsVertexColours) {
     const SceneFile file = parse_scene_file(ply, "triangle.PLY");
     EXPECT_EQ(file.format, SceneFormat::mesh);
     ASSERT_EQ(file.scene.meshes.size(), 1u);
-    EXPECT_EQ(file.scene.meshes[0].data.colors.size(), 3u);
+    // The colours are the file's, and the material's own colour is white, so the base colour is theirs alone.
+    const SceneMesh& mesh = file.scene.meshes[0];
+    ASSERT_EQ(mesh.data.colors.size(), 3u);
+    EXPECT_EQ(mesh.data.colors[0], glm::vec3(1, 0, 0));
+    EXPECT_EQ(mesh.data.colors[2], glm::vec3(0, 0, 1));
+    EXPECT_EQ(mesh.material.color, glm::vec3(1.0f));
+    EXPECT_TRUE(mesh.parts.empty());
+}
+
+TEST(MeshScene, aMeshNoFloatCameraCanFrameIsRefusedAsTheMeshsProblem) {
+    const std::string cases[] = {
+        "v 0 0 0\nv 1e30 0 0\nv 0 1e30 0\nf 1 2 3\n",    // the camera's own arithmetic overflows
+        "v 3e38 0 0\nv -3e38 0 0\nv 0 1 0\nf 1 2 3\n",   // its box's float sum alone would overflow
+        "v 0 0 0\nv 1e-39 0 0\nv 0 1e-39 0\nf 1 2 3\n",  // near would be subnormal
+    };
+    for (const std::string& obj : cases) {
+        try {
+            parse_scene_file(obj, "extreme.obj");
+            ADD_FAILURE() << "framed: " << obj;
+        } catch (const InputError& error) {
+            EXPECT_EQ(error.file(), "extreme.obj");
+            EXPECT_NE(error.message().find("the mesh's bounding sphere"), std::string::npos) << error.what();
+            EXPECT_NE(error.message().find("cannot be framed"), std::string::npos) << error.what();
+        }
+    }
+    // Inside the range: coordinates near 1e15, and an extent of 1e-15.
+    EXPECT_NO_THROW(parse_scene_file("v 1e15 0 0\nv 1.5e15 0 0\nv 1e15 1e14 0\nf 1 2 3\n", "big.obj"));
+    EXPECT_NO_THROW(parse_scene_file("v 0 0 0\nv 1e-15 0 0\nv 0 1e-15 0\nf 1 2 3\n", "small.obj"));
 }
 
 TEST(MeshScene, aMeshWithoutTrianglesIsRefusedNamingTheFile) {
