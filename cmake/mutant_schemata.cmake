@@ -7,11 +7,33 @@
 #
 # No include directory and no definition is added: every other file compiles with the production build's own
 # command line and headers, so that when a production build turns into the schemata build in place (tools/
-# plant_bugs.sh --reuse-build), ccache serves it and only the copies and the files including a header copy compile.
+# plant_bugs.sh --reuse-build), ninja leaves those files alone and only the copies and the files including a header
+# copy compile.
 #
-#   raster_mutant_schemata_apply()    after every target exists: swaps the sources and the header views, adds
-#                                     the switch
+#   raster_mutant_schemata_apply()      after every target exists: swaps the sources and the header views, adds
+#                                       the switch
+#   raster_mutant_schemata_leftovers()  in a normal build: clears what a schemata build left in its folder
 set(RASTER_MUTANT_SCHEMATA_DIR ${PROJECT_BINARY_DIR}/mutant_schemata)
+
+# Every object of the build removed, saying why. Needed wherever a file the objects compiled is seen again as an
+# original older than they are (a header copy gone from an include view), which nothing would recompile; ccache gives
+# back those it cached (the files without a precompiled header, or every file with
+# CCACHE_SLOPPINESS=pch_defines,time_macros).
+function(raster_remove_build_objects why)
+  file(GLOB_RECURSE objects ${PROJECT_BINARY_DIR}/*.o)
+  if(objects)
+    file(REMOVE ${objects})
+  endif()
+  message(STATUS "${why}: removed the build's objects")
+endfunction()
+
+# A normal build that was a schemata build (tools/plant_bugs.sh --reuse-build) compiles the production sources again.
+function(raster_mutant_schemata_leftovers)
+  if(EXISTS ${RASTER_MUTANT_SCHEMATA_DIR})
+    raster_remove_build_objects("This build was a mutant schemata build")
+    file(REMOVE_RECURSE ${RASTER_MUTANT_SCHEMATA_DIR})
+  endif()
+endfunction()
 
 # The include view of raster/MODULE (a link to the source folder) becomes a folder of links, one per file, the
 # header copies among them linking to their copies.
@@ -93,19 +115,13 @@ function(raster_mutant_schemata_apply)
   foreach(module IN LISTS header_modules)
     raster_mutant_header_view(${module} "${headers}")
   endforeach()
-  # A header that had a copy and has none now is seen through the view as its original again, which is older than
-  # the objects that compiled the copy, so nothing would recompile them: every object goes (as when the build turns
-  # back into a normal one, CMakeLists.txt).
+  # A header that had a copy and has none now is seen through the view as its original again.
   set(header_list ${RASTER_MUTANT_SCHEMATA_DIR}/header_copies.txt)
   if(EXISTS ${header_list})
     file(STRINGS ${header_list} previous_headers)
     foreach(header IN LISTS previous_headers)
       if(NOT header IN_LIST headers)
-        file(GLOB_RECURSE stale_objects ${PROJECT_BINARY_DIR}/*.o)
-        if(stale_objects)
-          file(REMOVE ${stale_objects})
-        endif()
-        message(STATUS "${header} has no copy any more: removed the schemata build's objects")
+        raster_remove_build_objects("${header} has no copy any more")
         break()
       endif()
     endforeach()

@@ -57,8 +57,8 @@ std::map<std::string, std::string> schemata_sources(const Catalogue& catalogue, 
                 throw CatalogueError(where(catalogue, *sites.front().entry) + " is stale: " + file + " does not exist");
             // The switch by its absolute path: the copies need no include directory of their own, so every
             // other file of the schemata build compiles with the production build's command line.
-            out[file] = schemata_source(catalogue, read_file(path), sites,
-                                        (fs::absolute(root) / "mutants/switch/raster_mutant_switch.h").lexically_normal().string());
+            const fs::path switch_header = fs::absolute(root) / "mutants/switch/raster_mutant_switch.h";
+            out[file] = schemata_source(catalogue, read_file(path), sites, switch_header.lexically_normal().string());
         } catch (const CatalogueError& error) {
             problems += std::string(problems.empty() ? "" : "\nraster_mutants: ") + error.what();
         }
@@ -114,7 +114,8 @@ int plan(const Catalogue& catalogue, const fs::path& ctest_json, const fs::path&
         for (const std::vector<int>& round : rounds) {
             if (!numbers.empty()) numbers += ';';
             for (size_t i = 0; i < round.size(); ++i) {
-                numbers += (i ? "," : "") + std::to_string(coverage.tests[round[i]].number);
+                if (i) numbers += ',';
+                numbers += std::to_string(coverage.tests[round[i]].number);
                 first_reaches = first_reaches || coverage.tests[round[i]].name == first;
             }
         }

@@ -23,8 +23,9 @@ Light framing_light(const Camera& camera);
 
 // The scene of the mesh file `path`, read into `data`: the mesh with its OBJ materials (else the default material,
 // its PLY colours showing), the default render settings, framing_camera of the sphere about the centre of its
-// triangles' vertices' bounding box through the farthest of them, and framing_light. Relative names inside it (an MTL library, textures) resolve against its folder through
-// `files`. Throws InputError naming the mesh file.
+// triangles' vertices' bounding box through the farthest of them, and framing_light. Relative names inside it (an
+// MTL library, textures) resolve against its folder through `files`. Throws InputError naming the mesh file, also
+// when no float camera can frame it.
 void read_mesh_file_scene(MeshData data, const std::filesystem::path& path, const SceneFileLoaders& files,
                           Scene& scene);
 

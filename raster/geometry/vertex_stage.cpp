@@ -31,11 +31,7 @@ void average_face_normals(const std::vector<glm::vec3>& world, const std::vector
         if (n == glm::vec3(0.0f)) continue;  // degenerate faces have no direction to contribute
         for (uint32_t corner : tri.v) normals[first_vertex + corner] += n;
     }
-    for (uint32_t i = 0; i < vertex_count; ++i) {
-        glm::vec3& n = normals[first_vertex + i];
-        const float length = glm::length(n);
-        n = length > 0.0f ? n / length : glm::vec3(0.0f);
-    }
+    for (uint32_t i = 0; i < vertex_count; ++i) normals[first_vertex + i] = unit_or_zero(normals[first_vertex + i]);
 }
 
 }  // namespace
@@ -83,11 +79,8 @@ TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& ne
         const auto vertex_count = static_cast<uint32_t>(mesh.data.positions.size());
         if (mesh.data.normals.size() == mesh.data.positions.size()) {
             const glm::mat3 to_world = normal_matrix(model);
-            for (uint32_t i = 0; i < vertex_count; ++i) {
-                const glm::vec3 n = to_world * mesh.data.normals[i];
-                const float length = glm::length(n);
-                out.world_normal[first_vertex + i] = length > 0.0f ? n / length : glm::vec3(0.0f);
-            }
+            for (uint32_t i = 0; i < vertex_count; ++i)
+                out.world_normal[first_vertex + i] = unit_or_zero(to_world * mesh.data.normals[i]);
         } else {
             average_face_normals(out.world_position, mesh.data.triangles, first_vertex, vertex_count,
                                  out.world_normal);
