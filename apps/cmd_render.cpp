@@ -34,7 +34,8 @@ void register_render_flags(CLI::App& app, RenderFlags& flags) {
     CLI::App* render = app.add_subcommand("render", "Render a scene to a PNG or PPM image.");
     render->footer(
         "SCENE is a raster YAML scene, a seed 000 YAML config (its task decides the output), a seed 001 balboa JSON\n"
-        "scene or a seed 003 JSON scene, told apart by content (see docs/scene-format.md).\n"
+        "scene or a seed 003 JSON scene, told apart by content (see docs/scene-format.md); or a glTF 2.0 file\n"
+        "(.gltf, .glb; docs/gltf.md) or an OBJ or PLY mesh alone, framed by a default camera and light.\n"
         "Flags override the scene's settings. Example: raster render corpus/scenes/teapot.yaml -o teapot.png --samples 4");
     render->add_option("scene", flags.scene, "Scene file")->required();
     render->add_option("-o,--output", flags.output,

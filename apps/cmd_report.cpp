@@ -58,7 +58,8 @@ void register_report_flags(CLI::App& app, ReportFlags& flags) {
 
 bool is_scene_file(const fs::path& path) {
     const std::string ext = path.extension().string();
-    return ext == ".yaml" || ext == ".yml" || ext == ".json";
+    // glTF models are scenes of their own; OBJ and PLY files in a folder are usually the meshes its scenes name.
+    return ext == ".yaml" || ext == ".yml" || ext == ".json" || ext == ".gltf" || ext == ".glb";
 }
 
 // The scene files the inputs name, in order; a directory contributes its scene files sorted by name.
@@ -71,7 +72,7 @@ std::vector<fs::path> scene_files(const std::vector<std::string>& inputs) {
             for (const auto& entry : fs::directory_iterator(input, error))
                 if (entry.is_regular_file() && is_scene_file(entry.path())) found.push_back(entry.path());
             if (error) throw InputError(input, 0, 0, "cannot list the directory: " + error.message());
-            if (found.empty()) throw InputError(input, 0, 0, "the directory has no .yaml, .yml or .json scene");
+            if (found.empty()) throw InputError(input, 0, 0, "the directory has no .yaml, .yml, .json, .gltf or .glb scene");
             std::sort(found.begin(), found.end());
             files.insert(files.end(), found.begin(), found.end());
         } else if (fs::exists(input, error)) {

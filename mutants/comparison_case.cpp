@@ -18,7 +18,10 @@ std::string comparison_test_name(const ComparisonCase& c) {
     if (is_corpus_case(c)) return "Corpus/CorpusAgainstOracle.hasNoGenuineDisagreement/" + stem + "_1spp";
     std::string name = "Compare/";
     name.append(c.scene, c.scene.rfind("corpus/", 0) == 0 ? 7 : 0);
-    if (!c.flags.empty()) name += "/" + std::regex_replace(c.flags, std::regex(" +"), "_");
+    if (!c.flags.empty()) {
+        name += '/';
+        name += std::regex_replace(c.flags, std::regex(" +"), "_");
+    }
     return name;
 }
 

@@ -2,7 +2,10 @@
 #include "oracle/reference/oracle_texture.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -28,31 +31,37 @@ double overlap(double a, double b, double c) { return std::max(0.0, std::min(b, 
 }  // namespace
 
 OracleTexture load_oracle_texture(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw std::runtime_error("oracle: cannot open texture " + path);
+    const std::string encoded((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    return decode_oracle_texture(encoded, path);
+}
+
+OracleTexture decode_oracle_texture(const std::string& encoded, const std::string& path) {
     OracleTexture texture;
     texture.path = path;
     OracleTextureLevel level;
     int channels = 0;
     std::vector<double> values;
-    FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file) throw std::runtime_error("oracle: cannot open texture " + path);
-    if (stbi_is_hdr_from_file(file)) {
-        float* pixels = stbi_loadf_from_file(file, &level.width, &level.height, &channels, 0);
+    const auto* bytes = reinterpret_cast<const stbi_uc*>(encoded.data());
+    const int size = static_cast<int>(std::min<size_t>(encoded.size(), INT_MAX));
+    if (stbi_is_hdr_from_memory(bytes, size)) {
+        float* pixels = stbi_loadf_from_memory(bytes, size, &level.width, &level.height, &channels, 0);
         if (pixels) values.assign(pixels, pixels + static_cast<size_t>(level.width) * level.height * channels);
         stbi_image_free(pixels);
-    } else if (stbi_is_16_bit_from_file(file)) {
-        stbi_us* pixels = stbi_load_from_file_16(file, &level.width, &level.height, &channels, 0);
+    } else if (stbi_is_16_bit_from_memory(bytes, size)) {
+        stbi_us* pixels = stbi_load_16_from_memory(bytes, size, &level.width, &level.height, &channels, 0);
         if (pixels)
             for (size_t i = 0; i < static_cast<size_t>(level.width) * level.height * channels; ++i)
                 values.push_back(pixels[i] / 65535.0);
         stbi_image_free(pixels);
     } else {
-        stbi_uc* pixels = stbi_load_from_file(file, &level.width, &level.height, &channels, 0);
+        stbi_uc* pixels = stbi_load_from_memory(bytes, size, &level.width, &level.height, &channels, 0);
         if (pixels)
             for (size_t i = 0; i < static_cast<size_t>(level.width) * level.height * channels; ++i)
                 values.push_back(pixels[i] / 255.0);
         stbi_image_free(pixels);
     }
-    std::fclose(file);
     if (values.empty()) throw std::runtime_error("oracle: cannot decode texture " + path);
     // Grey (and grey + alpha) is grey in every channel; alpha is not read.
     for (size_t i = 0; i < values.size(); i += channels) {
@@ -96,7 +105,10 @@ OracleTextures::OracleTextures(const Scene& scene) {
         for_each_material(mesh, [&](const Material& material) {
             if (!material.texture) return;
             auto& slot = by_path_[material.texture->path];
-            if (!slot) slot = std::make_shared<const OracleTexture>(load_oracle_texture(material.texture->path));
+            if (slot) return;
+            const TextureBinding& binding = *material.texture;
+            slot = std::make_shared<const OracleTexture>(binding.encoded ? decode_oracle_texture(*binding.encoded, binding.path)
+                                                                         : load_oracle_texture(binding.path));
         });
     }
 }

@@ -1,5 +1,6 @@
-// The oracle's textures: each image decoded on its own from the file the scene names (its own stb_image copy),
-// held in double, with its own mip chain, so no texel the oracle compares comes from raster's texture code.
+// The oracle's textures: each image decoded on its own (its own stb_image copy) from the file the scene names or the
+// bytes its scene file embeds, held in double, with its own mip chain, so no texel the oracle compares comes from
+// raster's texture code.
 #pragma once
 
 #include <map>
@@ -31,6 +32,8 @@ struct OracleTexture {
 
 // Decodes `path` (throws std::runtime_error when it cannot; raster loaded it, so that is a broken file system).
 OracleTexture load_oracle_texture(const std::string& path);
+// Decodes an image's encoded bytes (a texture embedded in its scene file); `path` names it.
+OracleTexture decode_oracle_texture(const std::string& encoded, const std::string& path);
 
 // The level below `level`, by the rule above.
 OracleTextureLevel next_oracle_level(const OracleTextureLevel& level);

@@ -14,6 +14,7 @@
 #include "raster/core/errors.h"
 #include "raster/formats/document.h"
 #include "raster/scene/validation.h"
+#include "raster/transform/scene_bounds.h"
 
 namespace raster {
 namespace {
@@ -55,6 +56,25 @@ Light framing_light(const Camera& camera) {
     return light;
 }
 
+void frame_scene(Scene& scene, bool camera, bool light) {
+    if (camera) {
+        const std::optional<WorldBounds> bounds = world_bounds(scene);
+        if (!bounds) throw InputError(scene.path, 0, 0, "the scene has no triangles to frame");
+        const float aspect = static_cast<float>(scene.settings.width) / static_cast<float>(scene.settings.height);
+        scene.camera = framing_camera(glm::vec3(bounds->centre), static_cast<float>(bounds->radius), aspect);
+        // A camera the file never wrote is not the user's to fix: say what about the meshes makes it unusable.
+        if (const std::optional<CameraProblem> problem = camera_problem(scene.camera)) {
+            char extent[96];
+            std::snprintf(extent, sizeof extent, "radius %g, its centre %g from the origin", bounds->radius,
+                          glm::length(bounds->centre));
+            throw InputError(scene.path, 0, 0,
+                             std::string("the mesh's bounding sphere (") + extent + ") cannot be framed by a float camera (" +
+                                 problem->message + "); place it in a scene with a camera of its own");
+        }
+    }
+    if (light) scene.lights = {framing_light(scene.camera)};
+}
+
 void read_mesh_file_scene(MeshData data, const std::filesystem::path& path, const SceneFileLoaders& files,
                           Scene& scene) {
     scene.path = path.string();
@@ -63,31 +83,8 @@ void read_mesh_file_scene(MeshData data, const std::filesystem::path& path, cons
     mesh.data = std::move(data);
     if (mesh.data.triangles.empty()) throw InputError(scene.path, 0, 0, "the mesh has no triangles to render");
     files.obj_materials(Node::undefined(), mesh.source, mesh, std::nullopt);
-
-    // In double: a float sum or length of coordinates near float's limit would overflow.
-    glm::dvec3 lo(mesh.data.positions[mesh.data.triangles.front().v[0]]), hi = lo;
-    for (const TriangleIndices& triangle : mesh.data.triangles)
-        for (const uint32_t v : triangle.v) {
-            lo = glm::min(lo, glm::dvec3(mesh.data.positions[v]));
-            hi = glm::max(hi, glm::dvec3(mesh.data.positions[v]));
-        }
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    double radius = 0.0;
-    for (const TriangleIndices& triangle : mesh.data.triangles)
-        for (const uint32_t v : triangle.v)
-            radius = std::max(radius, glm::length(glm::dvec3(mesh.data.positions[v]) - centre));
-    const float aspect = static_cast<float>(scene.settings.width) / static_cast<float>(scene.settings.height);
-    scene.camera = framing_camera(glm::vec3(centre), static_cast<float>(radius), aspect);
-    // A camera the file never wrote is not the user's to fix: say what about the mesh makes it unusable.
-    if (const std::optional<CameraProblem> problem = camera_problem(scene.camera)) {
-        char extent[96];
-        std::snprintf(extent, sizeof extent, "radius %g, its centre %g from the origin", radius, glm::length(centre));
-        throw InputError(scene.path, 0, 0,
-                         std::string("the mesh's bounding sphere (") + extent + ") cannot be framed by a float camera (" +
-                             problem->message + "); place it in a scene with a camera of its own");
-    }
-    scene.lights = {framing_light(scene.camera)};
     scene.meshes.push_back(std::move(mesh));
+    frame_scene(scene, true, true);
 }
 
 }  // namespace raster

@@ -1,5 +1,6 @@
 // A mesh file alone as a scene: an OBJ or PLY file given where a scene is expected renders as itself, framed by a
-// default camera and lit by a default light (docs/scene-format.md#a-mesh-file-alone).
+// default camera and lit by a default light (docs/scene-format.md#a-mesh-file-alone); a glTF file without a camera
+// or lights is framed and lit the same way.
 #pragma once
 
 #include <filesystem>
@@ -20,6 +21,11 @@ Camera framing_camera(const glm::vec3& centre, float radius, float aspect);
 // The default light for that camera: white, intensity 1, no attenuation, no shadows, at the camera's distance from
 // the centre, up and to the left of the view (a key light).
 Light framing_light(const Camera& camera);
+
+// Frames a scene whose file gave no camera (`camera`) or no light (`light`): framing_camera of the sphere about the
+// centre of the box bounding its placed triangles' vertices through the farthest of them, and framing_light. Throws
+// InputError naming the scene when no float camera can frame it.
+void frame_scene(Scene& scene, bool camera, bool light);
 
 // The scene of the mesh file `path`, read into `data`: the mesh with its OBJ materials (else the default material,
 // its PLY colours showing), the default render settings, framing_camera of the sphere about the centre of its

@@ -11,6 +11,7 @@
 #include "raster/formats/document.h"
 #include "raster/formats/document_reader.h"
 #include "raster/formats/mesh_file.h"
+#include "raster/gltf/gltf_scene.h"
 #include "raster/formats/scene_files.h"
 #include "raster/scene/validation.h"
 
@@ -23,6 +24,7 @@ const char* to_string(SceneFormat format) {
         case SceneFormat::seed000: return "seed000";
         case SceneFormat::seed001: return "seed001";
         case SceneFormat::mesh: return "mesh";
+        case SceneFormat::gltf: return "gltf";
     }
     return "?";
 }
@@ -65,10 +67,22 @@ SceneFile mesh_scene_file(MeshData data, const std::filesystem::path& path) {
     return out;
 }
 
+// A glTF file's scene: framed and lit by default where the file has no camera or no point light.
+SceneFile gltf_scene_file(std::string_view bytes, const std::filesystem::path& path) {
+    SceneFile out;
+    out.format = SceneFormat::gltf;
+    const GltfSceneParts parts = read_gltf_scene(bytes, path.string(), gltf_folder_reader(path), out.scene);
+    frame_scene(out.scene, !parts.camera, !parts.lights);
+    finish_scene_textures(out.scene);
+    validate_scene(out.scene);
+    return out;
+}
+
 }  // namespace
 
 SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path) {
     if (is_mesh_file(path)) return mesh_scene_file(parse_mesh_file(text, path), path);
+    if (is_gltf_file(path)) return gltf_scene_file(text, path);
     const std::string name = path.string();
     const Document document = parse_document(text, name);
     const Node& root = document.root();
@@ -92,7 +106,8 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
             break;
         }
         case SceneFormat::seed001: read_seed001_scene(root, reader, loaders.mesh, scene); break;
-        case SceneFormat::mesh: break;  // told by the extension before any parse; detect_format never says it
+        case SceneFormat::mesh:
+        case SceneFormat::gltf: break;  // told by the extension before any parse; detect_format never says them
     }
     finish_scene_textures(scene);
     validate_scene(scene);
@@ -101,6 +116,7 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
 
 SceneFile load_scene_file(const std::filesystem::path& path) {
     if (is_mesh_file(path)) return mesh_scene_file(load_mesh_file(path), path);  // the mesh readers' own size caps
+    if (is_gltf_file(path)) return gltf_scene_file(read_file_bytes(path, kMaxGltfFileBytes), path);
     return parse_scene_file(read_file_bytes(path, kMaxSceneFileBytes), path);
 }
 

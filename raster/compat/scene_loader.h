@@ -20,9 +20,10 @@ enum class SceneFormat {
     seed000,  // the seed 000 course's YAML config (task / resolution / obj / camera / transforms / lights)
     seed001,  // the seed 001 course's balboa JSON scene (camera / background / objects)
     mesh,     // a mesh file alone (.obj or .ply), framed by a default camera and light (mesh_scene.h)
+    gltf,     // a glTF 2.0 file (.gltf or .glb): its default scene (raster/gltf/gltf_scene.h, docs/gltf.md)
 };
 
-// Which format a scene file is: a mesh by its extension (.obj, .ply); else, parsed as a document, by its top-level
+// Which format a scene file is: a mesh or a glTF file by its extension (.obj, .ply; .gltf, .glb); else, parsed as a document, by its top-level
 // keys: seed 000 with `task`; seed 001 with `camera` and `objects`; seed 003 with `fov_angle` or `lookat`; else
 // raster.
 const char* to_string(SceneFormat format);

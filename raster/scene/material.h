@@ -33,6 +33,9 @@ struct Texture;  // raster/texture/texture.h: the decoded texels and their mip c
 struct TextureBinding {
     std::shared_ptr<const Texture> texture;
     std::string path;  // the image file, as resolved by the loader (the oracle decodes it on its own)
+    // The image's encoded bytes when it is not a file of its own (a glTF buffer or data URI), else null; `path`
+    // then names it uniquely ("model.glb#/images/0") and the oracle decodes these bytes on its own.
+    std::shared_ptr<const std::string> encoded;
     TextureFilter filter = TextureFilter::trilinear;
     TextureWrap wrap = TextureWrap::repeat;
     int max_anisotropy = 16;  // anisotropic only: most taps along the major axis, in [1, 64]

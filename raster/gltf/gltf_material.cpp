@@ -1,0 +1,138 @@
+// glTF materials as raster's Blinn-Phong materials (gltf_material.h).
+#include "raster/gltf/gltf_material.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raster/core/errors.h"
+#include "raster/gltf/gltf_model.h"
+#include "raster/texture/texture.h"
+
+namespace raster {
+namespace {
+
+constexpr int kNearest = 9728, kLinear = 9729;
+constexpr int kRepeat = 10497, kClampToEdge = 33071, kMirroredRepeat = 33648;
+
+glm::vec3 rgb(const std::vector<double>& values, const std::string& at, const std::string& file) {
+    if (values.size() < 3) throw InputError(file, 0, 0, at + ": a colour needs at least 3 numbers");
+    for (int c = 0; c < 3; ++c)
+        if (!(values[c] >= 0.0 && values[c] <= 1.0))
+            throw InputError(file, 0, 0, at + ": colour components are in [0, 1], got " + std::to_string(values[c]));
+    return {static_cast<float>(values[0]), static_cast<float>(values[1]), static_cast<float>(values[2])};
+}
+
+double unit_factor(double value, const std::string& at, const std::string& file) {
+    if (!(value >= 0.0 && value <= 1.0)) throw InputError(file, 0, 0, at + ": must be in [0, 1], got " + std::to_string(value));
+    return value;
+}
+
+TextureWrap wrap_of(int mode) {
+    return mode == kClampToEdge ? TextureWrap::clamp : mode == kMirroredRepeat ? TextureWrap::mirror : TextureWrap::repeat;
+}
+
+// NEAREST or LINEAR minification reads level 0 only; a mipmap filter, or none named, reads the chain.
+TextureFilter filter_of(int min_filter, int mag_filter) {
+    if (min_filter == kNearest) return mag_filter == kLinear ? TextureFilter::bilinear : TextureFilter::nearest;
+    if (min_filter == kLinear) return TextureFilter::bilinear;
+    return TextureFilter::trilinear;
+}
+
+}  // namespace
+
+float exponent_for_roughness(double roughness) {
+    const double a = roughness * roughness;
+    if (a * a < 2.0 / 4098.0) return 4096.0f;
+    return static_cast<float>(std::clamp(2.0 / (a * a) - 2.0, 1.0, 4096.0));
+}
+
+GltfMaterials::GltfMaterials(const tinygltf::Model& model, std::string file, GltfWarnings& warnings)
+    : model_(model), file_(std::move(file)), warnings_(warnings) {}
+
+std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::TextureInfo& info, const std::string& at) {
+    if (info.index < 0) return std::nullopt;
+    if (static_cast<size_t>(info.index) >= model_.textures.size())
+        throw InputError(file_, 0, 0, at + "/index: there is no texture " + std::to_string(info.index));
+    if (info.texCoord != 0) {
+        warnings_.say(at + ": reads TEXCOORD_" + std::to_string(info.texCoord) + "; raster reads TEXCOORD_0 only, so the texture is left out");
+        return std::nullopt;
+    }
+    if (info.extensions.count("KHR_texture_transform"))
+        warnings_.say(at + ": KHR_texture_transform is not read; the texture is applied untransformed");
+    const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(info.index)];
+    const std::string texture_at = "/textures/" + std::to_string(info.index);
+    if (texture.source < 0) {
+        warnings_.say(texture_at + " names no image (or only an extension's); the texture is left out");
+        return std::nullopt;
+    }
+    if (static_cast<size_t>(texture.source) >= model_.images.size())
+        throw InputError(file_, 0, 0, texture_at + "/source: there is no image " + std::to_string(texture.source));
+    TextureBinding binding;
+    binding.path = file_ + "#/images/" + std::to_string(texture.source);
+    auto& image = images_[texture.source];
+    if (!image.second) {
+        image.second = std::make_shared<const std::string>(gltf_image_bytes(model_, texture.source, file_));
+        if (!image.second->empty()) {
+            try {
+                image.first = std::make_shared<const Texture>(decode_texture(*image.second, binding.path));
+            } catch (const InputError& e) {
+                warnings_.say("/images/" + std::to_string(texture.source) + " cannot be decoded (" + e.message() +
+                              "); the textures using it are left out");
+            }
+        }
+    }
+    if (!image.first) return std::nullopt;
+    binding.texture = image.first;
+    binding.encoded = image.second;
+    if (texture.sampler >= 0) {
+        if (static_cast<size_t>(texture.sampler) >= model_.samplers.size())
+            throw InputError(file_, 0, 0, texture_at + "/sampler: there is no sampler " + std::to_string(texture.sampler));
+        const tinygltf::Sampler& sampler = model_.samplers[static_cast<size_t>(texture.sampler)];
+        binding.filter = filter_of(sampler.minFilter, sampler.magFilter);
+        binding.wrap = wrap_of(sampler.wrapS);
+        if (sampler.wrapT != sampler.wrapS)
+            warnings_.say("/samplers/" + std::to_string(texture.sampler) +
+                          ": wrapS and wrapT differ; raster wraps both directions as wrapS says");
+    }
+    return binding;
+}
+
+const GltfMaterial& GltfMaterials::at(int index, const std::string& use) {
+    if (const auto found = materials_.find(index); found != materials_.end()) return found->second;
+    GltfMaterial out;
+    if (index < 0) return materials_[index] = out;  // raster's default material (docs/gltf.md#materials)
+    if (static_cast<size_t>(index) >= model_.materials.size())
+        throw InputError(file_, 0, 0, use + ": there is no material " + std::to_string(index));
+    const tinygltf::Material& m = model_.materials[static_cast<size_t>(index)];
+    const std::string at = "/materials/" + std::to_string(index);
+    const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+    const std::string pbr_at = at + "/pbrMetallicRoughness";
+    out.color_factor = rgb(pbr.baseColorFactor, pbr_at + "/baseColorFactor", file_);
+    const double alpha = pbr.baseColorFactor.size() > 3 ? unit_factor(pbr.baseColorFactor[3], pbr_at + "/baseColorFactor", file_) : 1.0;
+    const double metallic = unit_factor(pbr.metallicFactor, pbr_at + "/metallicFactor", file_);
+    const double roughness = unit_factor(pbr.roughnessFactor, pbr_at + "/roughnessFactor", file_);
+    Material& material = out.material;
+    material.name = m.name;
+    material.color = out.color_factor;
+    material.diffuse = glm::vec3(static_cast<float>(1.0 - metallic));
+    material.specular = glm::vec3(static_cast<float>(0.04 * (1.0 - metallic))) + static_cast<float>(metallic) * out.color_factor;
+    material.exponent = exponent_for_roughness(roughness);
+    material.texture = base_color_texture(pbr.baseColorTexture, pbr_at + "/baseColorTexture");
+    if (m.alphaMode == "BLEND") {
+        material.opacity = static_cast<float>(alpha);
+    } else if (m.alphaMode == "MASK") {
+        out.cut_away = alpha < m.alphaCutoff;
+    } else if (m.alphaMode != "OPAQUE" && !m.alphaMode.empty()) {
+        throw InputError(file_, 0, 0, at + "/alphaMode: '" + m.alphaMode + "' is not OPAQUE, MASK or BLEND");
+    }
+    if (material.texture && (m.alphaMode == "BLEND" || m.alphaMode == "MASK"))
+        warnings_.say(at + ": the base colour texture's alpha is not read; " + m.alphaMode + " uses the factor's alpha alone");
+    if (pbr.metallicRoughnessTexture.index >= 0 || m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 ||
+        m.emissiveTexture.index >= 0)
+        warnings_.say(at + ": metallic-roughness, normal, occlusion and emissive textures are not read");
+    if (m.emissiveFactor.size() == 3 && (m.emissiveFactor[0] > 0 || m.emissiveFactor[1] > 0 || m.emissiveFactor[2] > 0))
+        warnings_.say(at + ": emission is not rendered");
+    return materials_[index] = out;
+}
+
+}  // namespace raster

@@ -1,0 +1,50 @@
+// glTF materials as raster's Blinn-Phong materials (docs/gltf.md#materials): the base colour, its texture, the
+// metallic-roughness factors mapped to diffuse, specular and exponent, and the alpha mode.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "raster/gltf/gltf_warnings.h"
+#include "raster/gltf/tiny_gltf_config.h"
+#include "raster/scene/material.h"
+
+namespace raster {
+
+struct GltfMaterial {
+    Material material;
+    // The base colour factor: it multiplies COLOR_0, which replaces a raster material's colour, so a primitive with
+    // vertex colours carries their product.
+    glm::vec3 color_factor{1.0f};
+    // MASK with a base colour alpha below the cut-off: no texture alpha is read, so every triangle is cut away.
+    bool cut_away = false;
+};
+
+// The model's materials, each read once and each image decoded once.
+class GltfMaterials {
+public:
+    // `file` names the model in messages and in its embedded images' names.
+    GltfMaterials(const tinygltf::Model& model, std::string file, GltfWarnings& warnings);
+
+    // Material `index` of the model, or raster's default material for -1 (a primitive that names none).
+    const GltfMaterial& at(int index, const std::string& use);
+
+private:
+    std::optional<TextureBinding> base_color_texture(const tinygltf::TextureInfo& info, const std::string& at);
+
+    const tinygltf::Model& model_;
+    std::string file_;
+    GltfWarnings& warnings_;
+    std::map<int, GltfMaterial> materials_;
+    std::map<int, std::pair<std::shared_ptr<const Texture>, std::shared_ptr<const std::string>>> images_;
+};
+
+// The Blinn-Phong exponent for a glTF roughness: 2 / a^2 - 2 with a = roughness^2 (the usual match of the
+// Beckmann lobe), at least 1 and at most 4096.
+float exponent_for_roughness(double roughness);
+
+}  // namespace raster

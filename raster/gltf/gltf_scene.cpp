@@ -1,0 +1,260 @@
+// glTF 2.0 scenes read into raster's Scene (gltf_scene.h): the node trees walked, each mesh placed, the camera and
+// lights found.
+#include "raster/gltf/gltf_scene.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cfloat>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include <glm/geometric.hpp>
+
+#include "raster/core/errors.h"
+#include "raster/gltf/gltf_accessors.h"
+#include "raster/gltf/gltf_material.h"
+#include "raster/gltf/gltf_primitive.h"
+#include "raster/gltf/gltf_warnings.h"
+#include "raster/transform/model_matrix.h"
+#include "raster/transform/scene_bounds.h"
+
+namespace raster {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kDefaultImageHeight = 480, kMaxImageSide = 16384;
+
+// Extensions a file may require and still be drawn as its author meant.
+bool understood(const std::string& extension) { return extension == "KHR_lights_punctual"; }
+
+using Steps = std::vector<TransformStep>;
+
+// A node on the walk: its index, how deep it is, and its parent's chain (the root's last).
+struct Pending {
+    int node;
+    int depth;
+    std::shared_ptr<const Steps> parent_steps;
+};
+
+class ModelReader {
+public:
+    ModelReader(const tinygltf::Model& model, const std::string& file, Scene& scene)
+        : model_(model), file_(file), warnings_(file), accessors_(model, file), materials_(model, file, warnings_),
+          scene_(scene) {}
+
+    GltfSceneParts read();
+
+private:
+    [[noreturn]] void fail(const std::string& at, const std::string& message) const {
+        throw InputError(file_, 0, 0, at + ": " + message);
+    }
+    float to_float(double value, const std::string& at) const {
+        if (!std::isfinite(value) || std::fabs(value) > FLT_MAX) fail(at, "not a finite float: " + std::to_string(value));
+        return static_cast<float>(value);
+    }
+    glm::vec3 vec3_of(const std::vector<double>& values, const std::string& at) const {
+        if (values.size() != 3) fail(at, "needs 3 numbers, has " + std::to_string(values.size()));
+        return {to_float(values[0], at), to_float(values[1], at), to_float(values[2], at)};
+    }
+
+    std::vector<int> root_nodes() const;
+    Steps node_steps(const tinygltf::Node& node, const std::string& at) const;
+    void place_mesh(int mesh_index, const std::string& node_at, const Steps& steps);
+    void place_camera(int camera_index, const std::string& node_at, const Steps& steps);
+    void place_light(const tinygltf::Node& node, const std::string& node_at, const Steps& steps);
+
+    const tinygltf::Model& model_;
+    std::string file_;
+    GltfWarnings warnings_;
+    GltfAccessorReader accessors_;
+    GltfMaterials materials_;
+    Scene& scene_;
+    GltfSceneParts parts_;
+    bool far_from_bounds_ = false;
+    uint64_t placed_triangles_ = 0;
+    std::map<std::pair<int, int>, std::optional<MeshData>> primitives_;  // each read once, placed many times
+};
+
+std::vector<int> ModelReader::root_nodes() const {
+    int scene = model_.defaultScene;
+    if (scene >= 0 && static_cast<size_t>(scene) >= model_.scenes.size()) fail("/scene", "there is no scene " + std::to_string(scene));
+    if (scene < 0 && !model_.scenes.empty()) scene = 0;
+    if (scene >= 0) return model_.scenes[static_cast<size_t>(scene)].nodes;
+    // No scenes: every node that is no node's child.
+    std::vector<bool> child(model_.nodes.size(), false);
+    for (const tinygltf::Node& node : model_.nodes)
+        for (const int c : node.children)
+            if (c >= 0 && static_cast<size_t>(c) < child.size()) child[static_cast<size_t>(c)] = true;
+    std::vector<int> roots;
+    for (size_t i = 0; i < child.size(); ++i)
+        if (!child[i]) roots.push_back(static_cast<int>(i));
+    return roots;
+}
+
+// The node's own transform as written, applied to the object first to last: its matrix, else scale, rotation and
+// translation (M = T R S).
+Steps ModelReader::node_steps(const tinygltf::Node& node, const std::string& at) const {
+    Steps steps;
+    if (!node.matrix.empty()) {
+        if (node.matrix.size() != 16) fail(at + "/matrix", "needs 16 numbers, has " + std::to_string(node.matrix.size()));
+        MatrixStep step;
+        for (int i = 0; i < 16; ++i) step.matrix[i / 4][i % 4] = to_float(node.matrix[static_cast<size_t>(i)], at + "/matrix");
+        steps.push_back(step);
+        return steps;
+    }
+    if (!node.scale.empty()) steps.push_back(ScaleStep{vec3_of(node.scale, at + "/scale")});
+    if (!node.rotation.empty()) {
+        if (node.rotation.size() != 4) fail(at + "/rotation", "needs 4 numbers, has " + std::to_string(node.rotation.size()));
+        glm::vec4 xyzw;  // as glTF writes it
+        for (int i = 0; i < 4; ++i) xyzw[i] = to_float(node.rotation[static_cast<size_t>(i)], at + "/rotation");
+        QuaternionStep step;
+        step.wxyz = {xyzw.w, xyzw.x, xyzw.y, xyzw.z};
+        if (step.wxyz == glm::vec4(0.0f)) fail(at + "/rotation", "the zero quaternion is no rotation");
+        steps.push_back(step);
+    }
+    if (!node.translation.empty()) steps.push_back(TranslateStep{vec3_of(node.translation, at + "/translation")});
+    return steps;
+}
+
+void ModelReader::place_mesh(int mesh_index, const std::string& node_at, const Steps& steps) {
+    if (static_cast<size_t>(mesh_index) >= model_.meshes.size()) fail(node_at + "/mesh", "there is no mesh " + std::to_string(mesh_index));
+    const tinygltf::Mesh& mesh = model_.meshes[static_cast<size_t>(mesh_index)];
+    for (size_t p = 0; p < mesh.primitives.size(); ++p) {
+        const tinygltf::Primitive& primitive = mesh.primitives[p];
+        const std::string at = "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(p);
+        const GltfMaterial& material = materials_.at(primitive.material, at + "/material");
+        auto [slot, fresh] = primitives_.try_emplace({mesh_index, static_cast<int>(p)});
+        if (fresh) {
+            slot->second = read_gltf_primitive(accessors_, primitive, at, material, warnings_);
+            if (!slot->second) warnings_.say(at + ": points and lines are not drawn");
+        }
+        if (!slot->second || material.cut_away) continue;
+        placed_triangles_ += slot->second->triangles.size();
+        if (placed_triangles_ > kMaxGltfPlacedTriangles)
+            fail(node_at + "/mesh", "the nodes place more than " + std::to_string(kMaxGltfPlacedTriangles) + " triangles");
+        SceneMesh placed;
+        placed.data = *slot->second;
+        placed.transform.steps = steps;
+        placed.material = material.material;
+        placed.source = file_ + "#" + at;
+        scene_.meshes.push_back(std::move(placed));
+    }
+}
+
+void ModelReader::place_camera(int camera_index, const std::string& node_at, const Steps& steps) {
+    if (static_cast<size_t>(camera_index) >= model_.cameras.size())
+        fail(node_at + "/camera", "there is no camera " + std::to_string(camera_index));
+    const tinygltf::Camera& camera = model_.cameras[static_cast<size_t>(camera_index)];
+    const std::string at = "/cameras/" + std::to_string(camera_index);
+    if (camera.type != "perspective") {
+        warnings_.say(at + ": orthographic cameras are not supported yet; the scene is framed by raster's default camera");
+        return;
+    }
+    const tinygltf::PerspectiveCamera& p = camera.perspective;
+    if (!(p.yfov > 0.0 && p.yfov < kPi)) fail(at + "/perspective/yfov", "must be in (0, pi), got " + std::to_string(p.yfov));
+    if (!(p.znear > 0.0)) fail(at + "/perspective/znear", "must be > 0, got " + std::to_string(p.znear));
+    if (p.zfar != 0.0 && !(p.zfar > p.znear)) fail(at + "/perspective/zfar", "must be > znear, got " + std::to_string(p.zfar));
+    // The camera looks down its node's -z with its y up, from its node's origin.
+    const glm::mat4 pose = compose_steps(steps);
+    Camera& out = scene_.camera;
+    out.eye = glm::vec3(pose[3]);
+    const glm::vec3 forward = glm::normalize(-glm::vec3(pose[2]));
+    out.target = out.eye + forward * std::max(1.0f, glm::length(out.eye));
+    out.up = glm::vec3(pose[1]);
+    out.fov_y_degrees = to_float(p.yfov * 180.0 / kPi, at + "/perspective/yfov");
+    out.near = to_float(p.znear, at + "/perspective/znear");
+    far_from_bounds_ = p.zfar == 0.0;  // an infinite projection: far is set to hold the scene once it is read
+    if (!far_from_bounds_) out.far = to_float(p.zfar, at + "/perspective/zfar");
+    if (p.aspectRatio > 0.0)
+        scene_.settings.width = static_cast<int>(std::clamp(std::lround(kDefaultImageHeight * p.aspectRatio), 1L,
+                                                            static_cast<long>(kMaxImageSide)));
+    parts_.camera = true;
+}
+
+void ModelReader::place_light(const tinygltf::Node& node, const std::string& node_at, const Steps& steps) {
+    const auto extension = node.extensions.find("KHR_lights_punctual");
+    if (extension == node.extensions.end()) return;
+    const tinygltf::Value& index = extension->second.Get("light");
+    const std::string at = node_at + "/extensions/KHR_lights_punctual/light";
+    if (!index.IsNumber()) fail(at, "must be a light's index");
+    const int light_index = index.GetNumberAsInt();
+    if (light_index < 0 || static_cast<size_t>(light_index) >= model_.lights.size())
+        fail(at, "there is no light " + std::to_string(light_index));
+    const tinygltf::Light& light = model_.lights[static_cast<size_t>(light_index)];
+    const std::string light_at = "/extensions/KHR_lights_punctual/lights/" + std::to_string(light_index);
+    if (light.type != "point") {
+        warnings_.say(light_at + ": " + light.type + " lights are not supported yet; only point lights light the scene");
+        return;
+    }
+    Light out;
+    out.position = glm::vec3(compose_steps(steps)[3]);
+    if (!light.color.empty()) out.color = vec3_of(light.color, light_at + "/color");
+    out.intensity = to_float(light.intensity, light_at + "/intensity");
+    if (out.intensity < 0.0f) fail(light_at + "/intensity", "must be >= 0");
+    out.attenuate = true;  // candela: the inverse square law
+    scene_.lights.push_back(out);
+    parts_.lights = true;
+}
+
+GltfSceneParts ModelReader::read() {
+    for (const std::string& extension : model_.extensionsRequired)
+        if (!understood(extension)) fail("/extensionsRequired", "the file needs " + extension + ", which raster does not read");
+    std::vector<bool> visited(model_.nodes.size(), false);
+    std::vector<Pending> stack;
+    const std::vector<int> roots = root_nodes();
+    const auto push_all = [&](const std::vector<int>& nodes, const std::string& at, int depth,
+                              const std::shared_ptr<const Steps>& parent) {
+        for (size_t i = nodes.size(); i-- > 0;) {
+            if (nodes[i] < 0 || static_cast<size_t>(nodes[i]) >= model_.nodes.size())
+                fail(at + "/" + std::to_string(i), "there is no node " + std::to_string(nodes[i]));
+            stack.push_back({nodes[i], depth, parent});
+        }
+    };
+    push_all(roots, "/scenes/" + std::to_string(std::max(0, model_.defaultScene)) + "/nodes", 1, std::make_shared<const Steps>());
+    bool camera_seen = false;
+    while (!stack.empty()) {
+        const Pending pending = stack.back();
+        stack.pop_back();
+        const std::string at = "/nodes/" + std::to_string(pending.node);
+        if (visited[static_cast<size_t>(pending.node)])
+            fail(at, "is reached twice; glTF nodes form trees, each node with one parent and no cycles");
+        visited[static_cast<size_t>(pending.node)] = true;
+        if (pending.depth > kMaxGltfNodeDepth) fail(at, "is more than " + std::to_string(kMaxGltfNodeDepth) + " nodes deep");
+        const tinygltf::Node& node = model_.nodes[static_cast<size_t>(pending.node)];
+        auto steps = std::make_shared<Steps>(node_steps(node, at));
+        steps->insert(steps->end(), pending.parent_steps->begin(), pending.parent_steps->end());
+        if (node.skin >= 0) warnings_.say(at + ": skins are not applied; the mesh is drawn in its bind pose");
+        if (node.mesh >= 0) place_mesh(node.mesh, at, *steps);
+        if (node.camera >= 0 && !camera_seen) {
+            camera_seen = true;
+            place_camera(node.camera, at, *steps);
+        }
+        place_light(node, at, *steps);
+        push_all(node.children, at + "/children", pending.depth + 1, steps);
+    }
+    if (scene_.meshes.empty()) fail("/scenes", "the scene places no triangles to draw");
+    if (far_from_bounds_) {
+        const WorldBounds bounds = *world_bounds(scene_);
+        const double reach = 1.1 * (glm::length(bounds.centre - glm::dvec3(scene_.camera.eye)) + bounds.radius);
+        scene_.camera.far = static_cast<float>(std::max(reach, 2.0 * scene_.camera.near));
+    }
+    return parts_;
+}
+
+}  // namespace
+
+bool is_gltf_file(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension == ".gltf" || extension == ".glb";
+}
+
+GltfSceneParts read_gltf_scene(std::string_view bytes, const std::string& name, const GltfFileReader& files, Scene& scene) {
+    const tinygltf::Model model = parse_gltf_model(bytes, name, files);
+    scene.path = name;
+    return ModelReader(model, name, scene).read();
+}
+
+}  // namespace raster

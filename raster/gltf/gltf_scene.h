@@ -1,0 +1,33 @@
+// glTF 2.0 scenes (.gltf and .glb) read into raster's Scene (docs/gltf.md): the default scene's node trees, each
+// mesh placed by its node's transform chain as written, its camera and point lights.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "raster/gltf/gltf_model.h"
+#include "raster/scene/scene.h"
+
+namespace raster {
+
+// Whether `path` names a glTF file: its extension is .gltf or .glb, in any case.
+bool is_gltf_file(const std::filesystem::path& path);
+
+// What the file gave besides meshes: the caller frames a scene without a camera and lights one without lights, as
+// it does a mesh file alone.
+struct GltfSceneParts {
+    bool camera = false;
+    bool lights = false;
+};
+
+// The most nodes deep a tree may be, and the most triangles its meshes may place together (each placement holds its
+// own copy).
+inline constexpr int kMaxGltfNodeDepth = 256;
+inline constexpr uint64_t kMaxGltfPlacedTriangles = kMaxMeshTriangles;
+
+// Reads the model `bytes` (its path `name`, its external files through `files`) into `scene`'s meshes, camera and
+// lights. Throws InputError naming the file and the JSON path of the problem.
+GltfSceneParts read_gltf_scene(std::string_view bytes, const std::string& name, const GltfFileReader& files, Scene& scene);
+
+}  // namespace raster

@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""Writes the corpus's glTF models (corpus/gltf/), so they can be remade and reviewed.
+
+- instanced_boxes.gltf (+ .bin): one box mesh placed by two nodes under a rotated group, a second mesh sharing its
+  accessors with another material, a ground quad without
+  normals (flat normals), a perspective camera, a point light, three metallic-roughness materials;
+- textured_quad.glb: a quad with the checker texture embedded in the GLB's binary chunk, nearest filtering, texture
+  coordinates tiling it twice; no camera and no light, so raster frames and lights it;
+- strip_fan_colors.gltf: a buffer in a data URI; a triangle strip with normalized unsigned-byte RGBA colours, a
+  triangle fan with float RGB colours and a BLEND material, a line primitive (skipped); a camera without zfar.
+"""
+import base64
+import json
+import math
+import os
+import struct
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.join(ROOT, "corpus", "gltf")
+FLOAT, UBYTE, USHORT = 5126, 5121, 5123
+
+
+class Buffer:
+    """One buffer's bytes, each view 4-byte aligned, and the accessors and views that describe them."""
+
+    def __init__(self):
+        self.data = b""
+        self.views = []
+        self.accessors = []
+
+    def view(self, payload):
+        self.data += b"\0" * (-len(self.data) % 4)
+        self.views.append({"buffer": 0, "byteOffset": len(self.data), "byteLength": len(payload)})
+        self.data += payload
+        return len(self.views) - 1
+
+    def accessor(self, fmt, values, component, kind, normalized=False, bounds=False):
+        per = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4}[kind]
+        flat = [c for v in values for c in (v if isinstance(v, (list, tuple)) else [v])]
+        entry = {"bufferView": self.view(struct.pack("<%d%s" % (len(flat), fmt), *flat)), "componentType": component,
+                 "count": len(flat) // per, "type": kind}
+        if normalized:
+            entry["normalized"] = True
+        if bounds:
+            entry["min"] = [min(v[i] for v in values) for i in range(per)]
+            entry["max"] = [max(v[i] for v in values) for i in range(per)]
+        self.accessors.append(entry)
+        return len(self.accessors) - 1
+
+
+def quaternion(axis, degrees):
+    s = math.sin(math.radians(degrees) / 2)
+    n = math.sqrt(sum(a * a for a in axis))
+    return [axis[0] / n * s, axis[1] / n * s, axis[2] / n * s, math.cos(math.radians(degrees) / 2)]
+
+
+def box(buffer):
+    """A unit cube about the origin: 24 vertices with face normals, 36 unsigned-short indices."""
+    positions, normals, indices = [], [], []
+    for axis in range(3):
+        for sign in (-1, 1):
+            n = [0, 0, 0]
+            n[axis] = sign
+            u, v = [(axis + 1) % 3, (axis + 2) % 3]
+            base = len(positions)
+            for a, b in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+                p = [0.0, 0.0, 0.0]
+                p[axis], p[u], p[v] = 0.5 * sign, 0.5 * a, 0.5 * b
+                positions.append(p)
+                normals.append(n)
+            quad = [0, 1, 2, 0, 2, 3] if sign > 0 else [0, 2, 1, 0, 3, 2]
+            indices += [base + i for i in quad]
+    return {"POSITION": buffer.accessor("f", positions, FLOAT, "VEC3", bounds=True),
+            "NORMAL": buffer.accessor("f", normals, FLOAT, "VEC3")}, buffer.accessor("H", indices, USHORT, "SCALAR")
+
+
+def write_json(name, document):
+    with open(os.path.join(OUT, name), "w") as f:
+        json.dump(document, f, indent=1)
+        f.write("\n")
+
+
+def instanced_boxes():
+    buffer = Buffer()
+    box_attributes, box_indices = box(buffer)
+    ground = [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]]
+    ground_position = buffer.accessor("f", ground, FLOAT, "VEC3", bounds=True)
+    ground_indices = buffer.accessor("B", [0, 2, 1, 0, 3, 2], UBYTE, "SCALAR")
+    buffer.data += b"\0" * (-len(buffer.data) % 4)
+    with open(os.path.join(OUT, "instanced_boxes.bin"), "wb") as f:
+        f.write(buffer.data)
+    material = lambda name, colour, metallic, roughness: {
+        "name": name, "pbrMetallicRoughness": {"baseColorFactor": colour + [1.0], "metallicFactor": metallic,
+                                               "roughnessFactor": roughness}}
+    write_json("instanced_boxes.gltf", {
+        "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "color": [1, 0.95, 0.9], "intensity": 40}]}},
+        "scene": 0,
+        "scenes": [{"nodes": [0, 3, 4, 5]}],
+        "nodes": [
+            {"name": "group", "rotation": quaternion([0, 1, 0], 30), "children": [1, 2, 6]},
+            {"name": "box A", "mesh": 0, "translation": [-1.2, 0.4, 0], "scale": [0.8, 0.8, 0.8]},
+            {"name": "box B", "mesh": 1, "translation": [1.2, 0.5, 0.2], "rotation": quaternion([1, 1, 0], 45)},
+            {"name": "ground", "mesh": 2, "scale": [4, 1, 4]},
+            {"name": "camera", "camera": 0, "translation": [0, 2.5, 7], "rotation": quaternion([1, 0, 0], -18)},
+            {"name": "lamp", "translation": [2, 5, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+            {"name": "box C", "mesh": 0, "translation": [0, 0.3, -1.5], "scale": [0.6, 0.6, 0.6]},
+        ],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.5, "zfar": 50, "aspectRatio": 1.5}}],
+        "meshes": [
+            {"name": "red box", "primitives": [{"attributes": box_attributes, "indices": box_indices, "material": 0}]},
+            {"name": "blue box", "primitives": [{"attributes": box_attributes, "indices": box_indices, "material": 1}]},
+            {"name": "ground", "primitives": [{"attributes": {"POSITION": ground_position}, "indices": ground_indices,
+                                               "material": 2}]},
+        ],
+        "materials": [material("red", [0.8, 0.15, 0.1], 0.0, 0.4), material("blue", [0.2, 0.3, 0.9], 0.5, 0.3),
+                      material("ground", [0.6, 0.6, 0.55], 0.0, 1.0)],
+        "buffers": [{"uri": "instanced_boxes.bin", "byteLength": len(buffer.data)}],
+        "bufferViews": buffer.views,
+        "accessors": buffer.accessors,
+    })
+
+
+def textured_quad():
+    buffer = Buffer()
+    positions = [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+    uvs = [[0, 2], [2, 2], [2, 0], [0, 0]]  # glTF's v runs down the image: (0, 0) is its top left
+    attributes = {"POSITION": buffer.accessor("f", positions, FLOAT, "VEC3", bounds=True),
+                  "NORMAL": buffer.accessor("f", [[0, 0, 1]] * 4, FLOAT, "VEC3"),
+                  "TEXCOORD_0": buffer.accessor("f", uvs, FLOAT, "VEC2")}
+    indices = buffer.accessor("H", [0, 1, 2, 0, 2, 3], USHORT, "SCALAR")
+    with open(os.path.join(ROOT, "corpus", "textures", "checker.png"), "rb") as f:
+        image_view = buffer.view(f.read())
+    buffer.data += b"\0" * (-len(buffer.data) % 4)
+    document = {
+        "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": attributes, "indices": indices, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}, "metallicFactor": 0}}],
+        "textures": [{"sampler": 0, "source": 0}],
+        "samplers": [{"magFilter": 9728, "minFilter": 9728, "wrapS": 10497, "wrapT": 10497}],
+        "images": [{"bufferView": image_view, "mimeType": "image/png"}],
+        "buffers": [{"byteLength": len(buffer.data)}],
+        "bufferViews": buffer.views,
+        "accessors": buffer.accessors,
+    }
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    chunks = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(buffer.data), 0x004E4942) + buffer.data
+    with open(os.path.join(OUT, "textured_quad.glb"), "wb") as f:
+        f.write(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
+
+
+def strip_fan_colors():
+    buffer = Buffer()
+    strip = [[-2 + 0.5 * (i // 2), -0.2 - 0.8 * (i % 2), 0] for i in range(6)]  # counter-clockwise: facing +z
+    strip_colours = [[255, 40 * i, 0, 255] for i in range(6)]
+    fan = [[1.2, 0, 0.3]] + [[1.2 + math.cos(a), math.sin(a), 0.3] for a in (0, 1.2, 2.4, 3.6)]
+    fan_colours = [[1, 1, 1], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1]]
+    line = [[-2, 1.5, 0], [2, 1.5, 0]]
+    primitives = [
+        {"attributes": {"POSITION": buffer.accessor("f", strip, FLOAT, "VEC3", bounds=True),
+                        "COLOR_0": buffer.accessor("B", strip_colours, UBYTE, "VEC4", normalized=True)},
+         "mode": 5, "material": 0},
+        {"attributes": {"POSITION": buffer.accessor("f", fan, FLOAT, "VEC3", bounds=True),
+                        "COLOR_0": buffer.accessor("f", fan_colours, FLOAT, "VEC3")},
+         "mode": 6, "material": 1},
+        {"attributes": {"POSITION": buffer.accessor("f", line, FLOAT, "VEC3", bounds=True)}, "mode": 1},
+    ]
+    write_json("strip_fan_colors.gltf", {
+        "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0, 0, 6]}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+        "meshes": [{"primitives": primitives}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.8, 1, 1], "metallicFactor": 0}},
+                      {"alphaMode": "BLEND", "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 0.6],
+                                                                       "metallicFactor": 0}}],
+        "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(buffer.data).decode(),
+                     "byteLength": len(buffer.data)}],
+        "bufferViews": buffer.views,
+        "accessors": buffer.accessors,
+    })
+
+
+if __name__ == "__main__":
+    os.makedirs(OUT, exist_ok=True)
+    instanced_boxes()
+    textured_quad()
+    strip_fan_colors()
