@@ -247,7 +247,9 @@ MeshData read_inline_mesh(const Node& node, const DocumentReader& reader) {
     return mesh;
 }
 
-SceneMesh read_mesh(const Node& node, const DocumentReader& reader, const SceneFileLoaders& files) {
+}  // namespace
+
+SceneMesh read_raster_mesh(const Node& node, const DocumentReader& reader, const SceneFileLoaders& files) {
     reader.expect_map(node, "a mesh");
     reader.check_keys(node, {"file", "vertices", "faces", "normals", "vertex_colors", "face_colors", "uvs",
                              "transform", "material"});
@@ -271,10 +273,8 @@ SceneMesh read_mesh(const Node& node, const DocumentReader& reader, const SceneF
     return mesh;
 }
 
-}  // namespace
-
 void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene) {
-    reader.check_keys(root, {"image", "camera", "render", "lights", "meshes"});
+    reader.check_keys(root, {"image", "camera", "render", "lights", "meshes", "shapes", "nodes"});
     if (const Node& v = reader.optional(root, "image"); v.is_defined()) read_image(v, reader, scene.settings);
     if (const Node& v = reader.optional(root, "render"); v.is_defined()) read_raster_render(v, reader, scene.settings);
     check_settings(root, reader, scene.settings);
@@ -283,9 +283,14 @@ void read_raster_scene(const Node& root, const DocumentReader& reader, const Sce
         reader.expect_sequence(v, "lights");
         for (const Node& light : v.items()) scene.lights.push_back(read_light(light, reader));
     }
-    const Node& meshes = reader.required(root, "meshes");
-    reader.expect_sequence(meshes, "meshes");
-    for (const Node& mesh : meshes.items()) scene.meshes.push_back(read_mesh(mesh, reader, files));
+    const Node& meshes = reader.optional(root, "meshes");
+    if (!meshes.is_defined() && !reader.optional(root, "nodes").is_defined() && !reader.optional(root, "shapes").is_defined())
+        reader.fail(root, "a scene needs 'meshes', or 'shapes' placed by 'nodes'");
+    if (meshes.is_defined()) {
+        reader.expect_sequence(meshes, "meshes");
+        for (const Node& mesh : meshes.items()) scene.meshes.push_back(read_raster_mesh(mesh, reader, files));
+    }
+    read_raster_graph(root, reader, files, scene);
 }
 
 }  // namespace raster

@@ -33,6 +33,10 @@ struct SceneFileLoaders {
 // The raster format's `render` section into `settings`.
 void read_raster_render(const Node& node, const DocumentReader& reader, RenderSettings& settings);
 void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
+// One entry of the raster format's `meshes` (or `shapes`): a file or an inline mesh, its transform and material.
+SceneMesh read_raster_mesh(const Node& node, const DocumentReader& reader, const SceneFileLoaders& files);
+// The raster format's scene graph (`shapes` and `nodes`), each placement appended to the scene's meshes.
+void read_raster_graph(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
 
 // A camera's nodes in a document (undefined where the file leaves the value to its default), and the node to blame
 // for a camera problem: the value's own node, else the node it is relative to (target and up: the eye; far: near),
