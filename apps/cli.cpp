@@ -27,6 +27,7 @@ struct CommandLine::Parser {
         app.require_subcommand(1);
         commands = {
             add_render_command(app),
+            add_animate_command(app),
             add_compare_command(app),
             add_report_command(app),
             add_tradeoff_command(app),

@@ -21,6 +21,7 @@ struct Command {
 
 // One function per subcommand, each in apps/cmd_<name>.cpp.
 Command add_render_command(CLI::App& app);
+Command add_animate_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_tradeoff_command(CLI::App& app);

@@ -1,7 +1,10 @@
 // The settings flags: registration with CLI11 and their application to a scene.
 #include "apps/settings_flags.h"
 
+#include <cmath>
+
 #include "raster/core/errors.h"
+#include "raster/transform/scene_pose.h"
 #include "raster/scene/validation.h"
 #include "raster/texture/mip_chains.h"
 
@@ -60,12 +63,19 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
                        "sorted transparency: the A-buffer's cap on transparent fragments in the frame, 1..134217728, "
                        "24 bytes each (default 16777216)")
         ->check(CLI::Range(static_cast<int>(kMinFragments), static_cast<int>(kMaxFragments)));
+    command.add_option("--time", flags.time,
+                       "An animated scene at this instant, in seconds (default 0; docs/animation.md)");
     command.add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
     command.add_option("--threads", flags.threads, "Worker threads, 0 = all cores (the output is the same for any count)")
         ->check(CLI::Range(0, 256));
 }
 
 void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
+    if (flags.time) {
+        if (!scene.animation) throw InputError(scene.path, 0, 0, "--time: the scene has no animation to pose");
+        if (!std::isfinite(*flags.time)) throw InputError("", 0, 0, "--time must be a finite number of seconds");
+        pose_scene(scene, *flags.time);
+    }
     RenderSettings& settings = scene.settings;
     if (flags.samples) settings.samples = *flags.samples;
     if (flags.pattern) parse_sample_pattern(*flags.pattern, settings.pattern);

@@ -26,16 +26,17 @@ struct SettingsFlags {
     std::optional<float> shadow_bias, shadow_slope_bias;
     std::optional<std::string> transparency;  // sorted | weighted
     std::optional<int> max_fragments;
+    std::optional<float> time;  // an animated scene's instant
     bool alpha = false;
     int threads = 0;
 };
 
-// Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, the shadow and
-// transparency flags, --alpha and
-// --threads.
+// Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, the
+// shadow and transparency flags, --time, --alpha and --threads.
 void register_settings_flags(CLI::App& command, SettingsFlags& flags);
 
-// Applies the flags given to the scene's settings; throws InputError when the result is not a valid frame.
+// Poses an animated scene at --time, applies the flags given to the scene's settings; throws InputError when the
+// scene has no animation to pose or the result is not a valid frame.
 void apply_settings_flags(const SettingsFlags& flags, Scene& scene);
 
 }  // namespace raster::cli

@@ -7,7 +7,9 @@
 - textured_quad.glb: a quad with the checker texture embedded in the GLB's binary chunk, nearest filtering, texture
   coordinates tiling it twice; no camera and no light, so raster frames and lights it;
 - strip_fan_colors.gltf: a buffer in a data URI; a triangle strip with normalized unsigned-byte RGBA colours, a
-  triangle fan with float RGB colours and a BLEND material, a line primitive (skipped); a camera without zfar.
+  triangle fan with float RGB colours and a BLEND material, a line primitive (skipped); a camera without zfar;
+- animated_box.gltf: a box turned by LINEAR rotation keys, moved by CUBICSPLINE translation keys and squashed by STEP
+  scale keys; no light, so raster lights it.
 """
 import base64
 import json
@@ -185,8 +187,46 @@ def strip_fan_colors():
     })
 
 
+def animated_box():
+    buffer = Buffer()
+    box_attributes, box_indices = box(buffer)
+    times = lambda values: buffer.accessor("f", values, FLOAT, "SCALAR", bounds=False)
+    # Rotation: LINEAR quarter turns about a tilted axis (x, y, z, w as glTF writes them).
+    rotation_in = times([0, 1, 2, 3])
+    rotation_out = buffer.accessor("f", [quaternion([0.3, 1, 0], a) for a in (0, 90, 180, 270)], FLOAT, "VEC4")
+    # Translation: CUBICSPLINE, each key an in-tangent, a value and an out-tangent.
+    translation_in = times([0, 1.5, 3])
+    translation_out = buffer.accessor("f", [[0, 0, 0], [-1, 0, 0], [0, 2, 0],
+                                            [0, 0, 0], [1, 0.5, 0], [0, 0, 0],
+                                            [0, -2, 0], [-1, 0, 0], [0, 0, 0]], FLOAT, "VEC3")
+    # Scale: STEP, jumping at 2 s.
+    scale_in = times([0, 2])
+    scale_out = buffer.accessor("f", [[1, 1, 1], [1.3, 0.7, 1.3]], FLOAT, "VEC3")
+    write_json("animated_box.gltf", {
+        "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
+        "scenes": [{"nodes": [0, 1]}],
+        "nodes": [{"name": "box", "mesh": 0}, {"camera": 0, "translation": [0, 0.8, 5]}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.5, "zfar": 20}}],
+        "meshes": [{"primitives": [{"attributes": box_attributes, "indices": box_indices, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.3, 0.7, 0.4, 1], "metallicFactor": 0,
+                                                "roughnessFactor": 0.5}}],
+        "animations": [{"name": "tumble", "channels": [
+            {"sampler": 0, "target": {"node": 0, "path": "rotation"}},
+            {"sampler": 1, "target": {"node": 0, "path": "translation"}},
+            {"sampler": 2, "target": {"node": 0, "path": "scale"}}],
+            "samplers": [{"input": rotation_in, "output": rotation_out, "interpolation": "LINEAR"},
+                         {"input": translation_in, "output": translation_out, "interpolation": "CUBICSPLINE"},
+                         {"input": scale_in, "output": scale_out, "interpolation": "STEP"}]}],
+        "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(buffer.data).decode(),
+                     "byteLength": len(buffer.data)}],
+        "bufferViews": buffer.views,
+        "accessors": buffer.accessors,
+    })
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     instanced_boxes()
     textured_quad()
     strip_fan_colors()
+    animated_box()

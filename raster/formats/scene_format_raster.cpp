@@ -8,6 +8,45 @@
 
 namespace raster {
 
+TransformStep read_transform_step(const std::string& kind, const Node& value, const DocumentReader& reader) {
+    if (kind == "translate") return TranslateStep{reader.vec3(value, "translate")};
+    if (kind == "scale") return ScaleStep{reader.vec3(value, "scale", true)};
+    if (kind == "rotate") {
+        // {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]
+        RotateStep rotate;
+        if (value.is_map()) {
+            reader.check_keys(value, {"angle", "axis"});
+            rotate.degrees = reader.finite_float(reader.required(value, "angle"), "rotate angle");
+            rotate.axis = reader.vec3(reader.required(value, "axis"), "rotate axis");
+        } else {
+            if (!value.is_sequence() || value.size() != 4)
+                reader.fail(value, "rotate is {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]");
+            rotate.degrees = reader.finite_float(value[0], "rotate angle");
+            rotate.axis = {reader.finite_float(value[1], "rotate axis"), reader.finite_float(value[2], "rotate axis"),
+                           reader.finite_float(value[3], "rotate axis")};
+        }
+        if (!(glm::length(rotate.axis) > 0.0f)) reader.fail(value, "rotate axis must not be zero");
+        return rotate;
+    }
+    if (kind == "quaternion") {
+        if (!value.is_sequence() || value.size() != 4) reader.fail(value, "quaternion is [w, x, y, z]");
+        QuaternionStep quaternion;
+        for (int i = 0; i < 4; ++i) quaternion.wxyz[i] = reader.finite_float(value[i], "quaternion");
+        if (!(glm::dot(quaternion.wxyz, quaternion.wxyz) > 0.0f)) reader.fail(value, "quaternion must not be zero");
+        return quaternion;
+    }
+    // lookat: place the object at `eye`, facing `target` with its -z axis
+    reader.expect_map(value, "lookat");
+    reader.check_keys(value, {"eye", "target", "up"});
+    Camera frame;
+    frame.eye = reader.vec3(reader.required(value, "eye"), "lookat eye");
+    frame.target = reader.vec3(reader.required(value, "target"), "lookat target");
+    if (const Node& up = reader.optional(value, "up"); up.is_defined()) frame.up = reader.vec3(up, "lookat up");
+    if (const auto problem = camera_problem(frame))
+        reader.fail(value, "lookat: " + problem->message.substr(problem->message.find(' ') + 1));
+    return LookAtStep{frame.eye, frame.target, frame.up};
+}
+
 std::vector<TransformStep> read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
                                                const DocumentReader& reader) {
     std::vector<TransformStep> out;
@@ -15,45 +54,7 @@ std::vector<TransformStep> read_transform_steps(const std::vector<std::reference
         if (!step.is_map() || step.size() != 1)
             reader.fail(step, "each transform step is a map with one key: translate, rotate, quaternion, scale or lookat");
         reader.check_keys(step, {"translate", "rotate", "quaternion", "scale", "lookat"});
-        const std::string kind = step.entries().front().key.text();
-        const Node& value = step.entries().front().value;
-        if (kind == "translate") {
-            out.push_back(TranslateStep{reader.vec3(value, "translate")});
-        } else if (kind == "scale") {
-            out.push_back(ScaleStep{reader.vec3(value, "scale", true)});
-        } else if (kind == "rotate") {
-            // {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]
-            RotateStep rotate;
-            if (value.is_map()) {
-                reader.check_keys(value, {"angle", "axis"});
-                rotate.degrees = reader.finite_float(reader.required(value, "angle"), "rotate angle");
-                rotate.axis = reader.vec3(reader.required(value, "axis"), "rotate axis");
-            } else {
-                if (!value.is_sequence() || value.size() != 4)
-                    reader.fail(value, "rotate is {angle: degrees, axis: [x, y, z]} or [degrees, x, y, z]");
-                rotate.degrees = reader.finite_float(value[0], "rotate angle");
-                rotate.axis = {reader.finite_float(value[1], "rotate axis"), reader.finite_float(value[2], "rotate axis"),
-                               reader.finite_float(value[3], "rotate axis")};
-            }
-            if (!(glm::length(rotate.axis) > 0.0f)) reader.fail(value, "rotate axis must not be zero");
-            out.push_back(rotate);
-        } else if (kind == "quaternion") {
-            if (!value.is_sequence() || value.size() != 4) reader.fail(value, "quaternion is [w, x, y, z]");
-            QuaternionStep quaternion;
-            for (int i = 0; i < 4; ++i) quaternion.wxyz[i] = reader.finite_float(value[i], "quaternion");
-            if (!(glm::dot(quaternion.wxyz, quaternion.wxyz) > 0.0f)) reader.fail(value, "quaternion must not be zero");
-            out.push_back(quaternion);
-        } else {  // lookat: place the object at `eye`, facing `target` with its -z axis
-            reader.expect_map(value, "lookat");
-            reader.check_keys(value, {"eye", "target", "up"});
-            Camera frame;
-            frame.eye = reader.vec3(reader.required(value, "eye"), "lookat eye");
-            frame.target = reader.vec3(reader.required(value, "target"), "lookat target");
-            if (const Node& up = reader.optional(value, "up"); up.is_defined()) frame.up = reader.vec3(up, "lookat up");
-            if (const auto problem = camera_problem(frame))
-                reader.fail(value, "lookat: " + problem->message.substr(problem->message.find(' ') + 1));
-            out.push_back(LookAtStep{frame.eye, frame.target, frame.up});
-        }
+        out.push_back(read_transform_step(step.entries().front().key.text(), step.entries().front().value, reader));
     }
     return out;
 }

@@ -10,6 +10,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "raster/scene/animation.h"
 #include "raster/scene/scene.h"
 #include "raster/scene/validation.h"
 #include "raster/formats/document_reader.h"
@@ -35,7 +36,10 @@ void read_raster_render(const Node& node, const DocumentReader& reader, RenderSe
 void read_raster_scene(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
 // One entry of the raster format's `meshes` (or `shapes`): a file or an inline mesh, its transform and material.
 SceneMesh read_raster_mesh(const Node& node, const DocumentReader& reader, const SceneFileLoaders& files);
-// The raster format's scene graph (`shapes` and `nodes`), each placement appended to the scene's meshes.
+// A scene-graph node's `keyframes` (and `interpolation`) into `animated`'s tracks (docs/animation.md).
+void read_raster_keyframes(const Node& node, const DocumentReader& reader, AnimatedNode& animated);
+// The raster format's scene graph (`shapes` and `nodes`), each placement appended to the scene's meshes; an
+// animation when a node has keyframes, the scene posed at time 0.
 void read_raster_graph(const Node& root, const DocumentReader& reader, const SceneFileLoaders& files, Scene& scene);
 
 // A camera's nodes in a document (undefined where the file leaves the value to its default), and the node to blame
@@ -50,6 +54,8 @@ const Node& camera_node_to_blame(const CameraNodes& nodes, CameraField field);
 // object in the order listed (the matrix is M = T_n * ... * T_1), read into steps as written; and the same for steps
 // gathered otherwise.
 std::vector<TransformStep> read_transform_chain(const Node& list, const DocumentReader& reader);
+// One step's value as `kind` (translate, rotate, quaternion, scale or lookat) reads it.
+TransformStep read_transform_step(const std::string& kind, const Node& value, const DocumentReader& reader);
 std::vector<TransformStep> read_transform_steps(const std::vector<std::reference_wrapper<const Node>>& steps,
                                                 const DocumentReader& reader);
 

@@ -14,11 +14,13 @@
 
 #include "raster/core/errors.h"
 #include "raster/gltf/gltf_accessors.h"
+#include "raster/gltf/gltf_animation.h"
 #include "raster/gltf/gltf_material.h"
 #include "raster/gltf/gltf_primitive.h"
 #include "raster/gltf/gltf_warnings.h"
 #include "raster/transform/model_matrix.h"
 #include "raster/transform/scene_bounds.h"
+#include "raster/transform/scene_pose.h"
 
 namespace raster {
 namespace {
@@ -36,6 +38,7 @@ struct Pending {
     int node;
     int depth;
     std::shared_ptr<const Steps> parent_steps;
+    int parent_animated;  // the parent's node in animation_.nodes, or -1 for a root
 };
 
 class ModelReader {
@@ -61,6 +64,7 @@ private:
 
     std::vector<int> root_nodes() const;
     Steps node_steps(const tinygltf::Node& node, const std::string& at) const;
+    AnimatedNode animated_node(const Steps& own, int parent) const;
     void place_mesh(int mesh_index, const std::string& node_at, const Steps& steps);
     void place_camera(int camera_index, const std::string& node_at, const Steps& steps);
     void place_light(const tinygltf::Node& node, const std::string& node_at, const Steps& steps);
@@ -73,6 +77,10 @@ private:
     Scene& scene_;
     GltfSceneParts parts_;
     bool far_from_bounds_ = false;
+    // Every node the walk reaches, as the animation would move it; kept only when the file has an animation.
+    SceneAnimation animation_;
+    std::vector<int> animated_index_;  // per glTF node: its node in animation_.nodes, or -1 when not reached
+    int current_animated_ = -1;        // the node being placed
     uint64_t placed_triangles_ = 0;
     std::map<std::pair<int, int>, std::optional<MeshData>> primitives_;  // each read once, placed many times
 };
@@ -118,6 +126,20 @@ Steps ModelReader::node_steps(const tinygltf::Node& node, const std::string& at)
     return steps;
 }
 
+// The node at rest: a matrix node keeps its matrix as a fixed step (glTF animates only nodes without one); a TRS
+// node's scale, rotation and translation are its rest values, which a channel replaces.
+AnimatedNode ModelReader::animated_node(const Steps& own, int parent) const {
+    AnimatedNode node;
+    node.parent = parent;
+    for (const TransformStep& step : own) {
+        if (const auto* scale = std::get_if<ScaleStep>(&step)) node.rest_scale = scale->factors;
+        else if (const auto* rotation = std::get_if<QuaternionStep>(&step)) node.rest_rotation = rotation->wxyz;
+        else if (const auto* translation = std::get_if<TranslateStep>(&step)) node.rest_translation = translation->offset;
+        else node.fixed.push_back(step);
+    }
+    return node;
+}
+
 void ModelReader::place_mesh(int mesh_index, const std::string& node_at, const Steps& steps) {
     if (static_cast<size_t>(mesh_index) >= model_.meshes.size()) fail(node_at + "/mesh", "there is no mesh " + std::to_string(mesh_index));
     const tinygltf::Mesh& mesh = model_.meshes[static_cast<size_t>(mesh_index)];
@@ -140,6 +162,7 @@ void ModelReader::place_mesh(int mesh_index, const std::string& node_at, const S
         placed.material = material.material;
         placed.source = file_ + "#" + at;
         scene_.meshes.push_back(std::move(placed));
+        animation_.meshes.push_back({current_animated_, {}});
     }
 }
 
@@ -156,13 +179,9 @@ void ModelReader::place_camera(int camera_index, const std::string& node_at, con
     if (!(p.yfov > 0.0 && p.yfov < kPi)) fail(at + "/perspective/yfov", "must be in (0, pi), got " + std::to_string(p.yfov));
     if (!(p.znear > 0.0)) fail(at + "/perspective/znear", "must be > 0, got " + std::to_string(p.znear));
     if (p.zfar != 0.0 && !(p.zfar > p.znear)) fail(at + "/perspective/zfar", "must be > znear, got " + std::to_string(p.zfar));
-    // The camera looks down its node's -z with its y up, from its node's origin.
-    const glm::mat4 pose = compose_steps(steps);
     Camera& out = scene_.camera;
-    out.eye = glm::vec3(pose[3]);
-    const glm::vec3 forward = glm::normalize(-glm::vec3(pose[2]));
-    out.target = out.eye + forward * std::max(1.0f, glm::length(out.eye));
-    out.up = glm::vec3(pose[1]);
+    camera_from_pose(compose_steps(steps), out);
+    animation_.camera_node = current_animated_;
     out.fov_y_degrees = to_float(p.yfov * 180.0 / kPi, at + "/perspective/yfov");
     out.near = to_float(p.znear, at + "/perspective/znear");
     far_from_bounds_ = p.zfar == 0.0;  // an infinite projection: far is set to hold the scene once it is read
@@ -195,6 +214,7 @@ void ModelReader::place_light(const tinygltf::Node& node, const std::string& nod
     if (out.intensity < 0.0f) fail(light_at + "/intensity", "must be >= 0");
     out.attenuate = true;  // candela: the inverse square law
     scene_.lights.push_back(out);
+    animation_.light_nodes.push_back(current_animated_);
     parts_.lights = true;
 }
 
@@ -205,14 +225,15 @@ GltfSceneParts ModelReader::read() {
     std::vector<Pending> stack;
     const std::vector<int> roots = root_nodes();
     const auto push_all = [&](const std::vector<int>& nodes, const std::string& at, int depth,
-                              const std::shared_ptr<const Steps>& parent) {
+                              const std::shared_ptr<const Steps>& parent, int parent_animated) {
         for (size_t i = nodes.size(); i-- > 0;) {
             if (nodes[i] < 0 || static_cast<size_t>(nodes[i]) >= model_.nodes.size())
                 fail(at + "/" + std::to_string(i), "there is no node " + std::to_string(nodes[i]));
-            stack.push_back({nodes[i], depth, parent});
+            stack.push_back({nodes[i], depth, parent, parent_animated});
         }
     };
-    push_all(roots, "/scenes/" + std::to_string(std::max(0, model_.defaultScene)) + "/nodes", 1, std::make_shared<const Steps>());
+    push_all(roots, "/scenes/" + std::to_string(std::max(0, model_.defaultScene)) + "/nodes", 1, std::make_shared<const Steps>(), -1);
+    animated_index_.assign(model_.nodes.size(), -1);
     bool camera_seen = false;
     while (!stack.empty()) {
         const Pending pending = stack.back();
@@ -224,6 +245,9 @@ GltfSceneParts ModelReader::read() {
         if (pending.depth > kMaxGltfNodeDepth) fail(at, "is more than " + std::to_string(kMaxGltfNodeDepth) + " nodes deep");
         const tinygltf::Node& node = model_.nodes[static_cast<size_t>(pending.node)];
         auto steps = std::make_shared<Steps>(node_steps(node, at));
+        current_animated_ = static_cast<int>(animation_.nodes.size());
+        animated_index_[static_cast<size_t>(pending.node)] = current_animated_;
+        animation_.nodes.push_back(animated_node(*steps, pending.parent_animated));
         steps->insert(steps->end(), pending.parent_steps->begin(), pending.parent_steps->end());
         if (node.skin >= 0) warnings_.say(at + ": skins are not applied; the mesh is drawn in its bind pose");
         if (node.mesh >= 0) place_mesh(node.mesh, at, *steps);
@@ -232,12 +256,26 @@ GltfSceneParts ModelReader::read() {
             place_camera(node.camera, at, *steps);
         }
         place_light(node, at, *steps);
-        push_all(node.children, at + "/children", pending.depth + 1, steps);
+        push_all(node.children, at + "/children", pending.depth + 1, steps, current_animated_);
     }
     if (scene_.meshes.empty()) fail("/scenes", "the scene places no triangles to draw");
+    if (read_gltf_animation(model_, accessors_, animated_index_, animation_, warnings_)) {
+        // Drawn as the animation has it at time 0 (--time poses another instant).
+        find_animation_span(animation_);
+        scene_.animation = std::make_shared<const SceneAnimation>(std::move(animation_));
+        pose_scene(scene_, 0.0f);
+    }
     if (far_from_bounds_) {
-        const WorldBounds bounds = *world_bounds(scene_);
-        const double reach = 1.1 * (glm::length(bounds.centre - glm::dvec3(scene_.camera.eye)) + bounds.radius);
+        // The reach of the scene from the eye, at 17 instants across an animation (the scene as drawn otherwise).
+        double reach = 0.0;
+        const SceneAnimation* animation = scene_.animation.get();
+        const int instants = animation ? 17 : 1;
+        for (int i = 0; i < instants; ++i) {
+            if (animation) pose_scene(scene_, animation->start + (animation->end - animation->start) * static_cast<float>(i) / 16.0f);
+            const WorldBounds bounds = *world_bounds(scene_);
+            reach = std::max(reach, 1.1 * (glm::length(bounds.centre - glm::dvec3(scene_.camera.eye)) + bounds.radius));
+        }
+        if (animation) pose_scene(scene_, 0.0f);
         scene_.camera.far = static_cast<float>(std::max(reach, 2.0 * scene_.camera.near));
     }
     return parts_;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -134,12 +135,16 @@ struct RenderSettings {
     TransparencySettings transparency;  // read only when a material's opacity is below 1
 };
 
+struct SceneAnimation;  // raster/scene/animation.h
+
 struct Scene {
     std::string path;  // the scene file, for messages
     RenderSettings settings;
     Camera camera;
     std::vector<Light> lights;
     std::vector<SceneMesh> meshes;
+    // What moves over time, for an animated scene (raster/transform/scene_pose.h poses it); null for a static one.
+    std::shared_ptr<const SceneAnimation> animation;
 };
 
 // Whether any mesh has a textured material: the only scenes that read texture coordinates.

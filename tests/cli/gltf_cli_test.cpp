@@ -15,14 +15,10 @@ namespace raster {
 namespace {
 
 using test_support::run_raster;
+using test_support::read_file;
 using test_support::TempDir;
 
 const std::filesystem::path kSource = RASTER_SOURCE_DIR;
-
-std::string read_bytes(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 TEST(GltfCli, rendersAModelAtItsCamerasAspectRatio) {
     TempDir dir;
@@ -30,7 +26,7 @@ TEST(GltfCli, rendersAModelAtItsCamerasAspectRatio) {
     const auto run = run_raster({"render", (kSource / "corpus/gltf/instanced_boxes.gltf").string(), "-o", image.string()});
     ASSERT_EQ(run.code, 0) << run.err;
     // aspectRatio 1.5 at the default height of 480.
-    EXPECT_EQ(read_bytes(image).substr(0, 15), "P6\n720 480\n255\n");
+    EXPECT_EQ(read_file(image).substr(0, 15), "P6\n720 480\n255\n");
 }
 
 TEST(GltfCli, aGlbWithItsEmbeddedTextureRenders) {
@@ -38,7 +34,7 @@ TEST(GltfCli, aGlbWithItsEmbeddedTextureRenders) {
     const std::filesystem::path image = dir / "quad.ppm";
     const auto run = run_raster({"render", (kSource / "corpus/gltf/textured_quad.glb").string(), "-o", image.string()});
     ASSERT_EQ(run.code, 0) << run.err;
-    const std::string bytes = read_bytes(image);
+    const std::string bytes = read_file(image);
     ASSERT_EQ(bytes.substr(0, 15), "P6\n640 480\n255\n");
     // The framed quad covers the image's centre, which is neither the black background nor one flat colour: the
     // checker's squares show through.
@@ -53,12 +49,12 @@ TEST(GltfCli, aGlbWithItsEmbeddedTextureRenders) {
 
 TEST(GltfCli, aHostileFileIsAnErrorNamingTheFileAndTheJsonPath) {
     TempDir dir;
-    std::string text = read_bytes(kSource / "corpus/gltf/instanced_boxes.gltf");
+    std::string text = read_file(kSource / "corpus/gltf/instanced_boxes.gltf");
     const std::string count = "\"count\": 24";
     ASSERT_NE(text.find(count), std::string::npos);
     text.replace(text.find(count), count.size(), "\"count\": 2400");
     const std::filesystem::path model = dir.write("model.gltf", text);
-    dir.write("instanced_boxes.bin", read_bytes(kSource / "corpus/gltf/instanced_boxes.bin"));
+    dir.write("instanced_boxes.bin", read_file(kSource / "corpus/gltf/instanced_boxes.bin"));
     const auto run = run_raster({"render", model.string(), "-o", (dir / "out.png").string()});
     EXPECT_EQ(run.code, 2);
     EXPECT_NE(run.err.find("model.gltf"), std::string::npos) << run.err;
@@ -68,8 +64,8 @@ TEST(GltfCli, aHostileFileIsAnErrorNamingTheFileAndTheJsonPath) {
 
 TEST(GltfCli, aBufferOutsideTheModelsFolderIsRefused) {
     TempDir dir;
-    dir.write("secret.bin", read_bytes(kSource / "corpus/gltf/instanced_boxes.bin"));
-    std::string text = read_bytes(kSource / "corpus/gltf/instanced_boxes.gltf");
+    dir.write("secret.bin", read_file(kSource / "corpus/gltf/instanced_boxes.bin"));
+    std::string text = read_file(kSource / "corpus/gltf/instanced_boxes.gltf");
     const std::string uri = "\"uri\": \"instanced_boxes.bin\"";
     ASSERT_NE(text.find(uri), std::string::npos);
     text.replace(text.find(uri), uri.size(), "\"uri\": \"../secret.bin\"");

@@ -7,10 +7,12 @@
 
 #include "raster/compat/scene_loader.h"
 #include "raster/core/errors.h"
-#include "raster/transform/model_matrix.h"
+#include "tests/support/placed_points.h"
 
 namespace raster {
 namespace {
+
+using test_support::placed;
 
 const std::string kShapes =
     "shapes:\n"
@@ -19,9 +21,6 @@ const std::string kShapes =
     "    faces: [[0, 1, 2]]\n"
     "    transform: [{translate: [0, 0, 1]}]\n";
 
-glm::vec3 placed(const SceneMesh& mesh, const glm::vec3& p) {
-    return glm::vec3(model_matrix(mesh.transform) * glm::vec4(p, 1.0f));
-}
 
 std::string error_of(const std::string& text) {
     try {

@@ -9,11 +9,14 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "raster/transform/model_matrix.h"
+#include "tests/support/placed_points.h"
 #include "tests/support/gltf_builder.h"
 
 namespace raster {
 namespace {
+
+using test_support::placed;
+using test_support::expect_near;
 
 using nlohmann::json;
 using test_support::GltfBuilder;
@@ -22,15 +25,7 @@ using test_support::read_error;
 
 const double kHalfRoot2 = std::sqrt(0.5);
 
-glm::vec3 placed(const SceneMesh& mesh, const glm::vec3& p) {
-    return glm::vec3(model_matrix(mesh.transform) * glm::vec4(p, 1.0f));
-}
 
-void expect_near(const glm::vec3& got, const glm::vec3& want, float tolerance = 1e-5f) {
-    EXPECT_NEAR(got.x, want.x, tolerance);
-    EXPECT_NEAR(got.y, want.y, tolerance);
-    EXPECT_NEAR(got.z, want.z, tolerance);
-}
 
 TEST(GltfScene, aNodesTransformScalesThenRotatesThenTranslates) {
     GltfBuilder b = GltfBuilder::one_triangle();
