@@ -68,7 +68,7 @@ int run_view(const ViewFlags& flags, std::ostream& out, std::ostream& err) {
     const StopSignals signals;
     Scene scene;
     try {
-        scene = load_scene(flags.scene);
+        scene = load_scene_file(flags.scene, {flags.settings.strict}).scene;
         apply_settings_flags(flags.settings, scene);
     } catch (const InputError& error) {
         err << "raster view: error: " << error.what() << "\n";

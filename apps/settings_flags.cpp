@@ -65,6 +65,9 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
         ->check(CLI::Range(static_cast<int>(kMinFragments), static_cast<int>(kMaxFragments)));
     command.add_option("--time", flags.time,
                        "An animated scene at this instant, in seconds (default 0; docs/animation.md)");
+    command.add_flag("--strict", flags.strict,
+                     "Refuse an OBJ whose material library or texture cannot be read, or whose MTL has a nameless "
+                     "newmtl (default: draw it with a warning, as viewers do)");
     command.add_flag("--alpha", flags.alpha, "Write RGBA with alpha = fraction of the pixel's samples covered");
     command.add_option("--threads", flags.threads, "Worker threads, 0 = all cores (the output is the same for any count)")
         ->check(CLI::Range(0, 256));

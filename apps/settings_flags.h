@@ -27,12 +27,13 @@ struct SettingsFlags {
     std::optional<std::string> transparency;  // sorted | weighted
     std::optional<int> max_fragments;
     std::optional<float> time;  // an animated scene's instant
+    bool strict = false;        // read when loading the scene (scene_loader.h SceneLoadOptions)
     bool alpha = false;
     int threads = 0;
 };
 
 // Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, the
-// shadow and transparency flags, --time, --alpha and --threads.
+// shadow and transparency flags, --time, --strict, --alpha and --threads.
 void register_settings_flags(CLI::App& command, SettingsFlags& flags);
 
 // Poses an animated scene at --time, applies the flags given to the scene's settings; throws InputError when the

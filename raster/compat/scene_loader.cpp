@@ -56,9 +56,9 @@ FileRequest seed000_request(const Seed000Config& config) {
 }
 
 // A mesh file's scene, from its loaded mesh.
-SceneFile mesh_scene_file(MeshData data, const std::filesystem::path& path) {
+SceneFile mesh_scene_file(MeshData data, const std::filesystem::path& path, const SceneLoadOptions& options) {
     const DocumentReader reader(path.string());
-    SceneFiles files(path, reader);
+    SceneFiles files(path, reader, options.strict);
     SceneFile out;
     out.format = SceneFormat::mesh;
     read_mesh_file_scene(std::move(data), path, files.loaders(), out.scene);
@@ -80,8 +80,8 @@ SceneFile gltf_scene_file(std::string_view bytes, const std::filesystem::path& p
 
 }  // namespace
 
-SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path) {
-    if (is_mesh_file(path)) return mesh_scene_file(parse_mesh_file(text, path), path);
+SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path, const SceneLoadOptions& options) {
+    if (is_mesh_file(path)) return mesh_scene_file(parse_mesh_file(text, path), path, options);
     if (is_gltf_file(path)) return gltf_scene_file(text, path);
     const std::string name = path.string();
     const Document document = parse_document(text, name);
@@ -90,7 +90,7 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
     if (!root.is_defined() || root.is_null()) throw InputError(name, 1, 1, "the scene file is empty");
     reader.expect_map(root, "a scene");
 
-    SceneFiles files(path, reader);
+    SceneFiles files(path, reader, options.strict);
     const SceneFileLoaders loaders = files.loaders();
     SceneFile out;
     Scene& scene = out.scene;
@@ -114,10 +114,10 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
     return out;
 }
 
-SceneFile load_scene_file(const std::filesystem::path& path) {
-    if (is_mesh_file(path)) return mesh_scene_file(load_mesh_file(path), path);  // the mesh readers' own size caps
+SceneFile load_scene_file(const std::filesystem::path& path, const SceneLoadOptions& options) {
+    if (is_mesh_file(path)) return mesh_scene_file(load_mesh_file(path), path, options);  // the mesh readers' own caps
     if (is_gltf_file(path)) return gltf_scene_file(read_file_bytes(path, kMaxGltfFileBytes), path);
-    return parse_scene_file(read_file_bytes(path, kMaxSceneFileBytes), path);
+    return parse_scene_file(read_file_bytes(path, kMaxSceneFileBytes), path, options);
 }
 
 Scene parse_scene(std::string_view text, const std::filesystem::path& path, SceneFormat* format) {

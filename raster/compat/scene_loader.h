@@ -43,11 +43,18 @@ struct SceneFile {
     FileRequest request;
 };
 
+// How leniently the files a scene names are read.
+struct SceneLoadOptions {
+    // An OBJ's material library or image that cannot be read, or its MTL's nameless newmtl, is an error; without
+    // it, a warning, and the model is drawn with default materials or untextured (docs/scene-format.md#meshes).
+    bool strict = false;
+};
+
 // Loads, validates (validate_scene) and returns a scene file, parsed once. Relative mesh paths are relative to the
 // scene file. Throws InputError naming the file, line and column of the problem.
-SceneFile load_scene_file(const std::filesystem::path& path);
+SceneFile load_scene_file(const std::filesystem::path& path, const SceneLoadOptions& options = {});
 // The same from text already in memory; `path` names it in messages and anchors relative mesh paths.
-SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path);
+SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path, const SceneLoadOptions& options = {});
 
 // The scene alone: load_scene_file's, its format into `format` when given.
 Scene load_scene(const std::filesystem::path& path, SceneFormat* format = nullptr);

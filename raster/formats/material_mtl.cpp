@@ -21,7 +21,7 @@ constexpr size_t kMaxMaterials = 1u << 16;
 
 class MtlReader {
 public:
-    MtlReader(std::string_view text, const std::string& name) : text_(text), name_(name) {}
+    MtlReader(std::string_view text, const std::string& name, bool strict) : text_(text), name_(name), strict_(strict) {}
 
     std::vector<MtlMaterial> read() {
         for (size_t start = 0; start < text_.size();) {
@@ -110,9 +110,11 @@ private:
         if (words.empty() || words[0][0] == '#') return;
         const std::string_view keyword = words[0];
         if (keyword == "newmtl") {
-            if (words.size() < 2) fail("newmtl needs a name");
+            if (words.size() < 2 && strict_) fail("newmtl needs a name");
+            if (words.size() < 2) warn("newmtl without a name: its statements are read, and no usemtl can select it");
             if (materials_.size() >= kMaxMaterials) fail("more than " + std::to_string(kMaxMaterials) + " materials");
             MtlMaterial material;
+            material.named = words.size() >= 2;
             for (size_t k = 1; k < words.size(); ++k) {
                 if (k > 1) material.name += ' ';
                 material.name.append(words[k]);
@@ -141,14 +143,15 @@ private:
 
     std::string_view text_;
     const std::string& name_;
+    bool strict_;
     int64_t line_ = 0;
     std::vector<MtlMaterial> materials_;
 };
 
 }  // namespace
 
-std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& name) {
-    return MtlReader(text, name).read();
+std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& name, bool strict) {
+    return MtlReader(text, name, strict).read();
 }
 
 }  // namespace raster

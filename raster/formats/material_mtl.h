@@ -21,6 +21,7 @@ struct MtlTextureMap {
 // One `newmtl` block; each value present only when the block sets it.
 struct MtlMaterial {
     std::string name;
+    bool named = true;  // false for a `newmtl` without a name (read leniently): no usemtl can select it
     int64_t line = 0;
     std::optional<glm::vec3> ambient, diffuse, specular;  // Ka, Kd, Ks
     std::optional<float> exponent;                        // Ns
@@ -31,7 +32,9 @@ struct MtlMaterial {
 // Parses MTL text; `name` names the file in messages. Statements raster does not draw with (illum, Ni, Ke, the other
 // maps...) are skipped; a colour given as `spectral` or `xyz`, and map_Kd options other than -clamp, are skipped
 // with a warning on stderr. Throws InputError, with the line, for a value that is not a finite number, a negative
-// colour or Ns, an opacity outside [0, 1], a statement before the first newmtl, or a map_Kd without a file.
-std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& name);
+// colour or Ns, an opacity outside [0, 1], a statement before the first newmtl, or a map_Kd without a file. A
+// `newmtl` without a name is an error when `strict`; otherwise it starts a material no usemtl can select, with a
+// warning, as assimp and viewers read such files.
+std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& name, bool strict = false);
 
 }  // namespace raster

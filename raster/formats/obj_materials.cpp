@@ -1,7 +1,9 @@
 // OBJ materials: usemtl runs to the mesh's material and parts (obj_materials.h).
 #include "raster/formats/obj_materials.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <system_error>
 #include <map>
 #include <set>
 #include <string>
@@ -22,6 +24,13 @@ InputError located(const std::filesystem::path& file, int64_t line, const std::s
     return InputError(file.string(), static_cast<int>(std::min<int64_t>(line, INT32_MAX)), 0, what + ": " + error.what());
 }
 
+// The problem with a file, as an error (strict) or a warning at the same place (otherwise).
+void report(const MaterialSources& sources, const InputError& problem, const char* consequence) {
+    if (sources.strict) throw problem;
+    std::fprintf(stderr, "%s:%d: warning: %s; %s\n", problem.file().c_str(), problem.line(), problem.message().c_str(),
+                 consequence);
+}
+
 Material material_for(const FoundMaterial& found, const std::optional<Material>& coefficients,
                       const MaterialSources& sources) {
     Material material = coefficients.value_or(Material{});
@@ -36,21 +45,32 @@ Material material_for(const FoundMaterial& found, const std::optional<Material>&
     }
     if (mtl.opacity) material.opacity = *mtl.opacity;  // d / Tr: whatever the scene gives for the coefficients
     if (mtl.diffuse_map) {
-        const std::filesystem::path image = found.library.parent_path() / mtl.diffuse_map->file;
+        const std::filesystem::path image = file_beside(found.library.parent_path(), mtl.diffuse_map->file);
         TextureBinding binding;
         try {
             binding.texture = sources.texture(image);
             binding.path = binding.texture->path;
+            if (mtl.diffuse_map->clamp) binding.wrap = TextureWrap::clamp;
+            material.texture = binding;
         } catch (const InputError& error) {
-            throw located(found.library, mtl.diffuse_map->line, "map_Kd '" + mtl.diffuse_map->file + "'", error);
+            report(sources, located(found.library, mtl.diffuse_map->line, "map_Kd '" + mtl.diffuse_map->file + "'", error),
+                   "the material is drawn untextured");
         }
-        if (mtl.diffuse_map->clamp) binding.wrap = TextureWrap::clamp;
-        material.texture = binding;
     }
     return material;
 }
 
 }  // namespace
+
+std::filesystem::path file_beside(const std::filesystem::path& folder, const std::string& name) {
+    const std::filesystem::path as_written = folder / name;
+    if (name.find('\\') == std::string::npos) return as_written;
+    std::error_code error;
+    if (std::filesystem::exists(as_written, error)) return as_written;
+    std::string portable = name;
+    std::replace(portable.begin(), portable.end(), '\\', '/');
+    return folder / std::filesystem::path(portable).lexically_normal();
+}
 
 void apply_obj_materials(SceneMesh& mesh, const std::filesystem::path& obj_path, const MaterialSources& sources,
                          const std::optional<Material>& coefficients) {
@@ -59,14 +79,17 @@ void apply_obj_materials(SceneMesh& mesh, const std::filesystem::path& obj_path,
     // The first library to define a name wins.
     std::map<std::string, FoundMaterial> by_name;
     for (const MaterialLibrary& library : mesh.data.material_libraries) {
-        const std::filesystem::path path = obj_path.parent_path() / library.file;
+        const std::filesystem::path path = file_beside(obj_path.parent_path(), library.file);
         const std::vector<MtlMaterial>* materials = nullptr;
         try {
             materials = &sources.library(path);
         } catch (const InputError& error) {
-            throw located(obj_path, library.line, "mtllib '" + library.file + "'", error);
+            report(sources, located(obj_path, library.line, "mtllib '" + library.file + "'", error),
+                   "its materials are missing, and the faces using them get the default material");
+            continue;
         }
-        for (const MtlMaterial& material : *materials) by_name.try_emplace(material.name, FoundMaterial{&material, path});
+        for (const MtlMaterial& material : *materials)
+            if (material.named) by_name.try_emplace(material.name, FoundMaterial{&material, path});
     }
     std::set<std::string> warned;
     mesh.parts.clear();

@@ -12,8 +12,8 @@
 
 namespace raster {
 
-SceneFiles::SceneFiles(const std::filesystem::path& scene_path, const DocumentReader& reader)
-    : folder_(scene_path.parent_path()), reader_(reader) {}
+SceneFiles::SceneFiles(const std::filesystem::path& scene_path, const DocumentReader& reader, bool strict)
+    : folder_(scene_path.parent_path()), reader_(reader), strict_(strict) {}
 
 std::filesystem::path SceneFiles::resolve(const std::string& file) const {
     std::filesystem::path path(file);
@@ -38,7 +38,7 @@ const MeshData& SceneFiles::mesh(const Node& where, const std::string& file) {
 const std::vector<MtlMaterial>& SceneFiles::library(const std::filesystem::path& path) {
     const std::string key = path.lexically_normal().string();
     if (const auto it = libraries_.find(key); it != libraries_.end()) return it->second;
-    std::vector<MtlMaterial> materials = parse_mtl(read_file_bytes(path, uint64_t{1} << 28), key);
+    std::vector<MtlMaterial> materials = parse_mtl(read_file_bytes(path, uint64_t{1} << 28), key, strict_);
     return libraries_.emplace(key, std::move(materials)).first->second;
 }
 
@@ -58,6 +58,7 @@ SceneFileLoaders SceneFiles::loaders() {
             return library(path);
         };
         sources.texture = [this](const std::filesystem::path& path) { return texture(path); };
+        sources.strict = strict_;
         try {
             apply_obj_materials(target, resolve(file), sources, coefficients);
         } catch (const InputError& error) {

@@ -18,7 +18,9 @@ class SceneFiles {
 public:
     // `scene_path` is the scene file (relative names resolve against its folder); `reader` locates errors in it.
     // Both must outlive the loaders.
-    SceneFiles(const std::filesystem::path& scene_path, const DocumentReader& reader);
+    // `strict`: an OBJ's material library or image that cannot be read, or an MTL's nameless newmtl, is an error
+    // rather than a warning (obj_materials.h).
+    SceneFiles(const std::filesystem::path& scene_path, const DocumentReader& reader, bool strict = false);
 
     SceneFileLoaders loaders();
 
@@ -30,6 +32,7 @@ private:
 
     std::filesystem::path folder_;
     const DocumentReader& reader_;
+    bool strict_;
     std::map<std::string, std::unique_ptr<MeshData>> meshes_;
     std::map<std::string, std::vector<MtlMaterial>> libraries_;
     std::map<std::string, std::shared_ptr<const Texture>> textures_;

@@ -99,5 +99,25 @@ TEST(MeshFileCli, aMeshWithNothingToDrawExitsTwoNamingTheFile) {
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
 }
 
+// What assimp and viewers draw, raster draws: an OBJ whose texture is missing renders untextured with a warning
+// naming the MTL line, and --strict makes it the error it was before (exit 2, nothing written).
+TEST(MeshFileCli, anObjWithAMissingTextureRendersWithAWarningUnlessStrict) {
+    TempDir dir;
+    dir.write("quad.obj", "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nusemtl wood\nf 1/1 2/2 3/3\n");
+    dir.write("quad.mtl", "newmtl wood\nmap_Kd .\\Texture.jpg\n");
+    testing::internal::CaptureStderr();  // the loaders warn on the process's stderr
+    const auto lenient = run_raster({"render", (dir / "quad.obj").string(), "-o", (dir / "out.png").string()});
+    const std::string warnings = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(lenient.code, 0) << lenient.err;
+    EXPECT_NE(warnings.find("quad.mtl:2: warning: map_Kd '.\\Texture.jpg'"), std::string::npos) << warnings;
+    EXPECT_NE(warnings.find("drawn untextured"), std::string::npos) << warnings;
+    EXPECT_TRUE(std::filesystem::exists(dir / "out.png"));
+
+    const auto strict = run_raster({"render", (dir / "quad.obj").string(), "--strict", "-o", (dir / "strict.png").string()});
+    EXPECT_EQ(strict.code, 2);
+    EXPECT_NE(strict.err.find("quad.mtl:2"), std::string::npos) << strict.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "strict.png"));
+}
+
 }  // namespace
 }  // namespace raster

@@ -1,5 +1,7 @@
 // Scenes with textures and OBJ materials: the raster format's texture keys, an OBJ's usemtl parts from its MTL,
-// seed 003 taking an OBJ's textures, uvs dropped where no material reads them, and the errors naming the line.
+// seed 003 taking an OBJ's textures, uvs dropped where no material reads them, files that other tools read drawn
+// with warnings (missing images and libraries, Windows separators, nameless materials), and, strictly, the errors
+// naming the line.
 #include <gtest/gtest.h>
 
 #include "raster/core/errors.h"
@@ -41,12 +43,12 @@ TEST(SceneTextures, anObjsUsemtlRunsBecomeMaterialParts) {
     EXPECT_EQ(mesh.data.corner_uvs[1].uv[2], glm::vec2(0, 1));
 }
 
-TEST(SceneTextures, aMissingImageNamesTheMtlLine) {
+TEST(SceneTextures, strictlyAMissingImageNamesTheMtlLine) {
     TempDir dir;
     dir.write("quad.obj", kQuadObj);
     dir.write("quad.mtl", "newmtl plain\nnewmtl wood\n\nmap_Kd nowhere.png\n");
     try {
-        load_scene(dir.write("scene.yaml", kRasterScene));
+        load_scene_file(dir.write("scene.yaml", kRasterScene), {true});
         FAIL() << "no error";
     } catch (const InputError& e) {
         const std::string what = e.what();
@@ -55,17 +57,59 @@ TEST(SceneTextures, aMissingImageNamesTheMtlLine) {
     }
 }
 
-TEST(SceneTextures, aMissingLibraryNamesTheObjLine) {
+TEST(SceneTextures, strictlyAMissingLibraryNamesTheObjLine) {
     TempDir dir;
     dir.write("quad.obj", kQuadObj);
     try {
-        load_scene(dir.write("scene.yaml", kRasterScene));
+        load_scene_file(dir.write("scene.yaml", kRasterScene), {true});
         FAIL() << "no error";
     } catch (const InputError& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("quad.obj:1"), std::string::npos) << what;
         EXPECT_NE(what.find("mtllib 'quad.mtl'"), std::string::npos) << what;
     }
+}
+
+// As assimp and viewers read them: a missing image leaves its material untextured, a missing library leaves its
+// faces the default material, and the rest of the model is drawn as the files say.
+TEST(SceneTextures, lenientlyAMissingImageOrLibraryIsDrawnWithoutIt) {
+    TempDir dir;
+    dir.write("quad.obj", kQuadObj);
+    dir.write("quad.mtl", "newmtl plain\nKd 0.5 0 0\nnewmtl wood\nKd 0.25 0.25 0.25\nmap_Kd nowhere.png\n");
+    const Scene untextured = load_scene(dir.write("scene.yaml", kRasterScene));
+    const SceneMesh& mesh = untextured.meshes.at(0);
+    EXPECT_EQ(mesh.material.diffuse, glm::vec3(0.5f, 0, 0));
+    ASSERT_EQ(mesh.parts.size(), 1u);
+    EXPECT_EQ(mesh.parts[0].material.diffuse, glm::vec3(0.25f));
+    EXPECT_FALSE(mesh.parts[0].material.texture);
+    EXPECT_TRUE(mesh.data.corner_uvs.empty());  // no material reads them now
+
+    fs::remove(dir / "quad.mtl");
+    const Scene bare = load_scene(dir / "scene.yaml");
+    EXPECT_EQ(bare.meshes.at(0).material.diffuse, Material{}.diffuse);
+    EXPECT_EQ(bare.meshes.at(0).parts.at(0).material.diffuse, Material{}.diffuse);
+}
+
+// A Windows exporter's `.\\tex\\wood.ppm`, and its `mtllib .\\quad.mtl`, name the files beside the model.
+TEST(SceneTextures, backslashesInAnObjOrMtlNameAreSeparators) {
+    TempDir dir;
+    std::string obj = kQuadObj;
+    obj.replace(0, std::string("mtllib quad.mtl").size(), "mtllib .\\quad.mtl");
+    dir.write("quad.obj", obj);
+    dir.write("quad.mtl", "newmtl plain\nnewmtl wood\nmap_Kd .\\tex\\wood.ppm\n");
+    dir.write("tex/wood.ppm", kPpm2x2);
+    const Scene scene = load_scene_file(dir.write("scene.yaml", kRasterScene), {true}).scene;
+    ASSERT_EQ(scene.meshes.at(0).parts.size(), 1u);
+    EXPECT_TRUE(scene.meshes.at(0).parts[0].material.texture);
+}
+
+TEST(SceneTextures, aNamelessNewmtlIsSkippedLenientlyAndRefusedStrictly) {
+    TempDir dir;
+    dir.write("quad.obj", kQuadObj);
+    dir.write("quad.mtl", "newmtl\nKd 0 1 0\nnewmtl plain\nKd 0.5 0 0\nnewmtl wood\n");
+    const Scene scene = load_scene(dir.write("scene.yaml", kRasterScene));
+    EXPECT_EQ(scene.meshes.at(0).material.diffuse, glm::vec3(0.5f, 0, 0));
+    EXPECT_THROW(load_scene_file(dir / "scene.yaml", {true}), InputError);
 }
 
 TEST(SceneTextures, rasterFormatTextureKeysAndInlineUvs) {
