@@ -1,4 +1,5 @@
 // `raster animate`: renders an animated scene as a numbered PNG sequence, one image per frame at a frame rate.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,11 +64,15 @@ int run_animate(const AnimateFlags& flags, std::ostream& out, std::ostream& err)
         if (!scene.animation) throw InputError(scene.path, 0, 0, "the scene has no animation (docs/animation.md)");
         apply_settings_flags(flags.settings, scene);
         const SceneAnimation& animation = *scene.animation;
-        const double duration = flags.duration.value_or(animation.end - animation.start);
-        frame_count = flags.frames.value_or(static_cast<int>(std::floor(duration * flags.fps + 1e-9)) + 1);
-        if (frame_count > kMaxFrames)
-            throw InputError("", 0, 0, std::to_string(frame_count) + " frames; raster animate writes at most " +
-                                           std::to_string(kMaxFrames));
+        const double duration = flags.duration.value_or(static_cast<double>(animation.end) - animation.start);
+        // The last key's frame counts though float times put it a hair past the last whole frame.
+        const double span = duration * flags.fps;
+        const double frames = std::floor(span + 1e-6 * std::max(1.0, span)) + 1.0;
+        if (!flags.frames && !(frames <= kMaxFrames))
+            throw InputError("", 0, 0, "the animation spans " + std::to_string(duration) + " s: " + std::to_string(frames) +
+                                           " frames at " + std::to_string(flags.fps) + " fps; raster animate writes at most " +
+                                           std::to_string(kMaxFrames) + " (use --frames or --duration)");
+        frame_count = flags.frames.value_or(static_cast<int>(frames));
     } catch (const InputError& error) {
         err << "raster animate: error: " << error.what() << "\n";
         return kExitBadInput;

@@ -17,6 +17,9 @@ namespace {
 constexpr uint64_t kMaxPlacedTriangles = kMaxMeshTriangles;
 constexpr uint64_t kMaxNodeVisits = uint64_t{1} << 16;
 constexpr int kMaxNodeDepth = 256;
+// An alias visited again reads its keyframes and copies its chain again: their totals are capped too.
+constexpr uint64_t kMaxGraphKeys = uint64_t{1} << 22;
+constexpr uint64_t kMaxPlacedSteps = uint64_t{1} << 22;
 
 class GraphReader {
 public:
@@ -60,7 +63,10 @@ private:
         AnimatedNode animated;
         animated.parent = parent_node;
         animated.fixed = chain;
-        if (reader_.optional(node, "keyframes").is_defined()) {
+        if (const Node& keys = reader_.optional(node, "keyframes"); keys.is_defined()) {
+            keys_ += keys.size();
+            if (keys_ > kMaxGraphKeys)
+                reader_.fail(keys, "the graph's nodes have more than " + std::to_string(kMaxGraphKeys) + " keyframes in all");
             read_raster_keyframes(node, reader_, animated);
             animated_ = true;
         } else if (const Node& v = reader_.optional(node, "interpolation"); v.is_defined()) {
@@ -83,6 +89,9 @@ private:
                                         (known.empty() ? std::string(" (the scene defines no shapes)") : " (shapes: " + known + ")"));
         }
         placed_triangles_ += found->second.data.triangles.size();
+        placed_steps_ += found->second.transform.steps.size() + chain.size();
+        if (placed_steps_ > kMaxPlacedSteps)
+            reader_.fail(name_node, "the nodes' chains hold more than " + std::to_string(kMaxPlacedSteps) + " steps in all");
         if (placed_triangles_ > kMaxPlacedTriangles)
             reader_.fail(name_node, "the nodes place more than " + std::to_string(kMaxPlacedTriangles) + " triangles");
         SceneMesh mesh = found->second;
@@ -98,7 +107,7 @@ private:
     SceneAnimation animation_;
     std::vector<std::pair<size_t, SceneAnimation::Placement>> placements_;  // scene mesh index, its placement
     bool animated_ = false;
-    uint64_t placed_triangles_ = 0, visits_ = 0;
+    uint64_t placed_triangles_ = 0, visits_ = 0, keys_ = 0, placed_steps_ = 0;
 };
 
 }  // namespace

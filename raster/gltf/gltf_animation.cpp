@@ -64,6 +64,7 @@ bool read_gltf_animation(const tinygltf::Model& model, const GltfAccessorReader&
                      model.animations[0].name + "')");
     const tinygltf::Animation& clip = model.animations[0];
     bool moves = false;
+    uint64_t keys = 0;  // every channel reads its sampler's keys: their total is capped, not each sampler's
     for (size_t c = 0; c < clip.channels.size(); ++c) {
         const tinygltf::AnimationChannel& channel = clip.channels[c];
         const std::string at = "/animations/0/channels/" + std::to_string(c);
@@ -85,6 +86,9 @@ bool read_gltf_animation(const tinygltf::Model& model, const GltfAccessorReader&
                                                     " has a matrix; glTF animates only nodes given by scale, rotation and translation");
         const tinygltf::AnimationSampler& sampler = clip.samplers[static_cast<size_t>(channel.sampler)];
         const std::string sampler_at = "/animations/0/samplers/" + std::to_string(channel.sampler);
+        keys += accessors.count(sampler.input, sampler_at + "/input") + accessors.count(sampler.output, sampler_at + "/output");
+        if (keys > kMaxGltfAnimationKeys)
+            accessors.fail(at, "the animation's channels read more than " + std::to_string(kMaxGltfAnimationKeys) + " keys");
         AnimatedNode& node = animation.nodes[static_cast<size_t>(target)];
         if (path == "rotation") {
             node.rotation = read_track<glm::vec4>(sampler, sampler_at, accessors, TINYGLTF_TYPE_VEC4,

@@ -10,6 +10,9 @@
 
 namespace raster {
 
+// The most keys (times and values) the channels of an animation may read together.
+inline constexpr uint64_t kMaxGltfAnimationKeys = uint64_t{1} << 22;
+
 // Reads animation 0 of `model` into `animation`'s nodes; `node_index[g]` is the animated node of glTF node g, or -1
 // where the scene does not reach it (its channels move nothing drawn). Returns whether a channel moves a node.
 // Throws InputError naming the JSON path of a malformed channel or sampler.

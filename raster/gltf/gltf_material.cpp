@@ -72,9 +72,19 @@ std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::
     auto& image = images_[texture.source];
     if (!image.second) {
         image.second = std::make_shared<const std::string>(gltf_image_bytes(model_, texture.source, file_));
+        // Many images may name one buffer view: each holds its own copy, and the copies together are capped.
+        encoded_bytes_ += image.second->size();
+        if (encoded_bytes_ > kMaxGltfExternalBytes)
+            throw InputError(file_, 0, 0, "/images/" + std::to_string(texture.source) + ": the model's images hold more than " +
+                                              std::to_string(kMaxGltfExternalBytes) + " encoded bytes");
         if (!image.second->empty()) {
             try {
-                image.first = std::make_shared<const Texture>(decode_texture(*image.second, binding.path));
+                auto decoded = std::make_shared<const Texture>(decode_texture(*image.second, binding.path));
+                const TextureLevel& level = decoded->levels.front();
+                decoded_texels_ += static_cast<uint64_t>(level.width) * static_cast<uint64_t>(level.height);
+                if (decoded_texels_ > kMaxGltfTexels)
+                    throw InputError("the model's images hold more than " + std::to_string(kMaxGltfTexels) + " texels");
+                image.first = std::move(decoded);
             } catch (const InputError& e) {
                 warnings_.say("/images/" + std::to_string(texture.source) + " cannot be decoded (" + e.message() +
                               "); the textures using it are left out");

@@ -41,7 +41,11 @@ private:
     GltfWarnings& warnings_;
     std::map<int, GltfMaterial> materials_;
     std::map<int, std::pair<std::shared_ptr<const Texture>, std::shared_ptr<const std::string>>> images_;
+    uint64_t decoded_texels_ = 0, encoded_bytes_ = 0;
 };
+
+// The most texels a model's images may decode to together (two of the largest texture raster reads).
+inline constexpr uint64_t kMaxGltfTexels = uint64_t{1} << 26;
 
 // The Blinn-Phong exponent for a glTF roughness: 2 / a^2 - 2 with a = roughness^2 (the usual match of the
 // Beckmann lobe), at least 1 and at most 4096.

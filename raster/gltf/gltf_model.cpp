@@ -8,6 +8,8 @@
 #include <map>
 #include <system_error>
 
+#include <nlohmann/json.hpp>
+
 #include "raster/core/errors.h"
 
 namespace raster {
@@ -34,9 +36,36 @@ std::string_view glb_json_chunk(std::string_view bytes, const std::string& name)
                                          std::to_string(bytes.size()));
     const uint64_t json_length = little_endian_u32(bytes.data() + 12);
     if (little_endian_u32(bytes.data() + 16) != kJsonChunk) throw InputError(name, 0, 0, "the GLB's first chunk is not JSON");
-    if (kGlbHeaderBytes + kChunkHeaderBytes + json_length > length)
+    const uint64_t json_end = kGlbHeaderBytes + kChunkHeaderBytes + json_length;
+    if (json_end > length)
         throw InputError(name, 0, 0, "the GLB's JSON chunk of " + std::to_string(json_length) + " bytes runs past its end");
+    // A binary chunk, whole: tinygltf 2.7 checks its length without its 8-byte header and would read past the end.
+    if (json_end < length) {
+        if (json_length % 4 != 0) throw InputError(name, 0, 0, "the GLB's JSON chunk does not end on a 4-byte boundary");
+        if (json_end + kChunkHeaderBytes > length)
+            throw InputError(name, 0, 0, "the GLB has bytes after its JSON chunk that are no chunk");
+        const uint64_t binary_length = little_endian_u32(bytes.data() + json_end);
+        if (bytes.substr(json_end + 4, 4) != std::string_view("BIN\0", 4))
+            throw InputError(name, 0, 0, "the GLB's second chunk is not BIN");
+        if (json_end + kChunkHeaderBytes + binary_length > length)
+            throw InputError(name, 0, 0, "the GLB's BIN chunk of " + std::to_string(binary_length) + " bytes runs past its end");
+    }
     return bytes.substr(kGlbHeaderBytes + kChunkHeaderBytes, json_length);
+}
+
+// tinygltf 2.7 gives every buffer of a GLB without a uri its own copy of the BIN chunk, and throws on an empty one:
+// only buffer 0 may leave its uri out, as the spec says.
+void check_glb_buffers(std::string_view json, const std::string& name) {
+    const nlohmann::json document = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
+    if (!document.is_object() || !document.contains("buffers") || !document["buffers"].is_array()) return;
+    const nlohmann::json& buffers = document["buffers"];
+    for (size_t i = 0; i < buffers.size(); ++i) {
+        if (!buffers[i].is_object() || buffers[i].contains("uri")) continue;
+        if (i > 0) throw InputError(name, 0, 0, "/buffers/" + std::to_string(i) + ": only buffer 0 of a GLB may leave out its uri");
+        const auto length = buffers[i].find("byteLength");
+        if (length == buffers[i].end() || !length->is_number() || !(length->get<double>() >= 1.0))
+            throw InputError(name, 0, 0, "/buffers/0/byteLength: the GLB's binary buffer needs a length of at least 1");
+    }
 }
 
 // tinygltf reads extras and extensions recursively: a deep nesting would overflow the stack, so it is refused first.
@@ -138,7 +167,9 @@ tinygltf::Model parse_gltf_model(std::string_view bytes, const std::string& name
         throw InputError(name, 0, 0, "the file has " + std::to_string(bytes.size()) + " bytes; raster reads at most " +
                                          std::to_string(kMaxGltfFileBytes));
     const bool binary = is_glb(bytes);
-    check_json_depth(binary ? glb_json_chunk(bytes, name) : bytes, name);
+    const std::string_view json = binary ? glb_json_chunk(bytes, name) : bytes;
+    check_json_depth(json, name);
+    if (binary) check_glb_buffers(json, name);
 
     FileContext context;
     context.files = &files;
@@ -155,16 +186,20 @@ tinygltf::Model parse_gltf_model(std::string_view bytes, const std::string& name
     tinygltf::Model model;
     std::string error, warning;
     const auto size = static_cast<unsigned int>(bytes.size());
-    const bool loaded =
-        binary ? loader.LoadBinaryFromMemory(&model, &error, &warning, reinterpret_cast<const unsigned char*>(bytes.data()),
-                                             size, "")
-               : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), size, "");
+    bool loaded = false;
+    try {
+        loaded = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                                      reinterpret_cast<const unsigned char*>(bytes.data()), size, "")
+                        : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), size, "");
+    } catch (const std::exception& e) {
+        // tinygltf 2.7 indexes some vectors with at(): a malformed file it did not foresee is still the file's fault.
+        throw InputError(name, 0, 0, std::string("glTF: tinygltf could not read the file (") + e.what() + ")");
+    }
     if (!loaded) {
-        // A file the reader refused says why in its own words; else tinygltf's first complaint.
-        if (!context.failures.empty() && error.find("File read error") != std::string::npos) {
-            const auto& [path, reason] = *context.failures.begin();
-            throw InputError(name, 0, 0, "a buffer's file " + reason);
-        }
+        // A file the reader refused says why in its own words (the one tinygltf names); else tinygltf's complaint.
+        for (const auto& [path, reason] : context.failures)
+            if (error.find("File read error : " + path + " ") != std::string::npos)
+                throw InputError(name, 0, 0, "a buffer's file " + reason);
         throw InputError(name, 0, 0, "glTF: " + first_line(error));
     }
     for (const auto& [path, reason] : context.failures)

@@ -57,12 +57,18 @@ std::optional<MeshData> read_gltf_primitive(const GltfAccessorReader& reader, co
 
     MeshData mesh;
     int components = 0;
-    const std::vector<float> positions =
-        reader.floats(position_accessor, attributes_at + "POSITION", {TINYGLTF_TYPE_VEC3}, {}, components);
-    const size_t vertex_count = positions.size() / 3;
+    // Counts are checked before anything is read: an accessor without a view costs nothing in the file.
+    const size_t vertex_count = reader.count(position_accessor, attributes_at + "POSITION");
     if (vertex_count > kMaxMeshVertices)
         reader.fail(attributes_at + "POSITION", std::to_string(vertex_count) + " vertices; raster reads at most " +
                                                     std::to_string(kMaxMeshVertices));
+    for (const auto& [name, accessor] : primitive.attributes)
+        if (name == "NORMAL" || name == "COLOR_0" || name == "TEXCOORD_0")
+            if (const size_t count = reader.count(accessor, attributes_at + name); count != vertex_count)
+                reader.fail(attributes_at + name, std::to_string(count) + " elements for " + std::to_string(vertex_count) +
+                                                      " positions");
+    const std::vector<float> positions =
+        reader.floats(position_accessor, attributes_at + "POSITION", {TINYGLTF_TYPE_VEC3}, {}, components);
     for (size_t i = 0; i < vertex_count; ++i) mesh.positions.emplace_back(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
 
     std::vector<uint32_t> indices;

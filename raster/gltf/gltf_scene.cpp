@@ -81,7 +81,7 @@ private:
     SceneAnimation animation_;
     std::vector<int> animated_index_;  // per glTF node: its node in animation_.nodes, or -1 when not reached
     int current_animated_ = -1;        // the node being placed
-    uint64_t placed_triangles_ = 0;
+    uint64_t placed_triangles_ = 0, read_triangles_ = 0, placed_steps_ = 0;
     std::map<std::pair<int, int>, std::optional<MeshData>> primitives_;  // each read once, placed many times
 };
 
@@ -147,15 +147,24 @@ void ModelReader::place_mesh(int mesh_index, const std::string& node_at, const S
         const tinygltf::Primitive& primitive = mesh.primitives[p];
         const std::string at = "/meshes/" + std::to_string(mesh_index) + "/primitives/" + std::to_string(p);
         const GltfMaterial& material = materials_.at(primitive.material, at + "/material");
+        if (material.cut_away) continue;  // never read: nothing of it is drawn
         auto [slot, fresh] = primitives_.try_emplace({mesh_index, static_cast<int>(p)});
         if (fresh) {
             slot->second = read_gltf_primitive(accessors_, primitive, at, material, warnings_);
             if (!slot->second) warnings_.say(at + ": points and lines are not drawn");
+            read_triangles_ += slot->second ? slot->second->triangles.size() : 0;
+            if (read_triangles_ > kMaxGltfPlacedTriangles)
+                fail(at, "the meshes hold more than " + std::to_string(kMaxGltfPlacedTriangles) + " triangles");
         }
-        if (!slot->second || material.cut_away) continue;
+        if (!slot->second) continue;
         placed_triangles_ += slot->second->triangles.size();
+        placed_steps_ += steps.size();
         if (placed_triangles_ > kMaxGltfPlacedTriangles)
             fail(node_at + "/mesh", "the nodes place more than " + std::to_string(kMaxGltfPlacedTriangles) + " triangles");
+        if (scene_.meshes.size() >= kMaxGltfPlacements || placed_steps_ > kMaxGltfPlacedSteps)
+            fail(node_at + "/mesh", "the nodes place more than " + std::to_string(kMaxGltfPlacements) +
+                                        " primitives, or chains of more than " + std::to_string(kMaxGltfPlacedSteps) +
+                                        " steps in all");
         SceneMesh placed;
         placed.data = *slot->second;
         placed.transform.steps = steps;
@@ -197,7 +206,7 @@ void ModelReader::place_light(const tinygltf::Node& node, const std::string& nod
     if (extension == node.extensions.end()) return;
     const tinygltf::Value& index = extension->second.Get("light");
     const std::string at = node_at + "/extensions/KHR_lights_punctual/light";
-    if (!index.IsNumber()) fail(at, "must be a light's index");
+    if (!index.IsInt()) fail(at, "must be a light's index");
     const int light_index = index.GetNumberAsInt();
     if (light_index < 0 || static_cast<size_t>(light_index) >= model_.lights.size())
         fail(at, "there is no light " + std::to_string(light_index));
@@ -258,7 +267,7 @@ GltfSceneParts ModelReader::read() {
         place_light(node, at, *steps);
         push_all(node.children, at + "/children", pending.depth + 1, steps, current_animated_);
     }
-    if (scene_.meshes.empty()) fail("/scenes", "the scene places no triangles to draw");
+    if (placed_triangles_ == 0) fail("/scenes", "the scene places no triangles to draw");
     if (read_gltf_animation(model_, accessors_, animated_index_, animation_, warnings_)) {
         // Drawn as the animation has it at time 0 (--time poses another instant).
         find_animation_span(animation_);

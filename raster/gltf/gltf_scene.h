@@ -21,10 +21,13 @@ struct GltfSceneParts {
     bool lights = false;
 };
 
-// The most nodes deep a tree may be, and the most triangles its meshes may place together (each placement holds its
-// own copy).
+// The most nodes deep a tree may be, and the most triangles its meshes may hold and its nodes place together (each
+// placement holds its own copy).
 inline constexpr int kMaxGltfNodeDepth = 256;
 inline constexpr uint64_t kMaxGltfPlacedTriangles = kMaxMeshTriangles;
+// The most primitives the nodes may place, and transform steps their chains may hold, together.
+inline constexpr uint64_t kMaxGltfPlacements = uint64_t{1} << 16;
+inline constexpr uint64_t kMaxGltfPlacedSteps = uint64_t{1} << 22;
 
 // Reads the model `bytes` (its path `name`, its external files through `files`) into `scene`'s meshes, camera and
 // lights. Throws InputError naming the file and the JSON path of the problem.

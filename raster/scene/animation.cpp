@@ -40,7 +40,7 @@ const T& key_value(const Track<T>& track, size_t k) {
 
 template <typename T, typename Blend>
 T sample(const Track<T>& track, float time, Blend blend) {
-    if (time <= track.times.front()) return key_value(track, 0);
+    if (!(time > track.times.front())) return key_value(track, 0);  // NaN too: no interval holds it
     if (time >= track.times.back()) return key_value(track, track.times.size() - 1);
     const Interval i = interval_of(track.times, time);
     switch (track.interpolation) {

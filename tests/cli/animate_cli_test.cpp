@@ -39,6 +39,25 @@ TEST(AnimateCli, writesAFrameForEachInstantTheSameAsRenderAtThatTime) {
     EXPECT_NE(read_file(dir / "frames/frame_0000.png"), read_file(dir / "frames/frame_0001.png"));
 }
 
+// Keys at 0 and 0.7 s (0.699999988 as a float) at 10 fps: 8 frames, the last at the last key, not 7. A span too
+// long for the frame cap is an error, not an empty folder.
+TEST(AnimateCli, theSpanCountsItsLastKeyAndATooLongOneIsRefused) {
+    TempDir dir;
+    const std::string shape =
+        "image: {width: 32, height: 24}\n"
+        "shapes: {tri: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1, 2]]}}\n";
+    const auto scene = dir.write("keys.yaml", shape + "nodes: [{shape: tri, keyframes: [{time: 0, scale: 1}, {time: 0.7, scale: 2}]}]\n");
+    const auto run = run_raster({"animate", scene.string(), "--fps", "10", "-o", (dir / "frames").string()});
+    ASSERT_EQ(run.code, 0) << run.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "frames/frame_0007.png"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "frames/frame_0008.png"));
+
+    const auto long_scene = dir.write("long.yaml", shape + "nodes: [{shape: tri, keyframes: [{time: 0, scale: 1}, {time: 1e10, scale: 2}]}]\n");
+    const auto refused = run_raster({"animate", long_scene.string(), "-o", (dir / "long").string()});
+    EXPECT_EQ(refused.code, 2);
+    EXPECT_NE(refused.err.find("raster animate writes at most 100000"), std::string::npos) << refused.err;
+}
+
 TEST(AnimateCli, aGltfAnimationPosesAtTheTimeAsked) {
     TempDir dir;
     const std::string model = (kSource / "corpus/gltf/animated_box.gltf").string();

@@ -117,6 +117,26 @@ TEST(GltfModel, aGlbsLengthsAreCheckedBeforeTinygltfReadsIt) {
     long_chunk[12] = static_cast<char>(long_chunk[12] + 8);
     EXPECT_NE(glb_refusal(long_chunk).find("runs past its end"), std::string::npos) << glb_refusal(long_chunk);
     EXPECT_NE(glb_refusal(good.substr(0, 15)).find("12-byte header"), std::string::npos);
+    // A BIN chunk whose stated length, with its 8-byte header, runs past the file (tinygltf 2.7 would read 8 bytes
+    // past it): the last 4 of its 12 bytes are missing.
+    nlohmann::json document = nlohmann::json::parse(GltfBuilder::one_triangle().text());
+    document["buffers"][0].erase("uri");
+    std::string short_binary = glb(document.dump(), std::string(44, '\0'));
+    const size_t length_at = short_binary.size() - 44 - 8;
+    short_binary[length_at] = 48;
+    EXPECT_NE(glb_refusal(short_binary).find("BIN chunk of 48 bytes runs past its end"), std::string::npos)
+        << glb_refusal(short_binary);
+    EXPECT_EQ(glb_refusal(glb(document.dump(), std::string(44, '\0'))), "");
+}
+
+TEST(GltfModel, onlyAGlbsFirstBufferMayLeaveOutItsUri) {
+    nlohmann::json document = nlohmann::json::parse(GltfBuilder::one_triangle().text());
+    document["buffers"][0].erase("uri");
+    document["buffers"].push_back({{"byteLength", 44}});
+    EXPECT_NE(glb_refusal(glb(document.dump(), std::string(44, '\0'))).find("/buffers/1: only buffer 0"), std::string::npos);
+    // tinygltf 2.7 throws std::out_of_range on an empty binary buffer: refused as the file's error first.
+    document["buffers"] = {{{"byteLength", 0}}};
+    EXPECT_NE(glb_refusal(glb(document.dump(), std::string(44, '\0'))).find("/buffers/0/byteLength"), std::string::npos);
 }
 
 TEST(GltfModel, deeplyNestedJsonIsRefusedBeforeTinygltfRecursesIntoIt) {

@@ -122,6 +122,14 @@ TEST(GltfScene, theCameraLooksDownItsNodesMinusZFromItsOrigin) {
     EXPECT_EQ(scene.settings.width, 960);  // 480 high at the camera's aspect ratio of 2
 }
 
+TEST(GltfScene, primitivesWithoutATriangleAreNothingToDraw) {
+    GltfBuilder b;
+    b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", b.positions({0, 0, 0, 1, 0, 0})}}}})}});
+    b.document["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
+    b.node({{"camera", 0}});
+    EXPECT_NE(read_error(b).find("places no triangles"), std::string::npos) << read_error(b);
+}
+
 TEST(GltfScene, aCameraWithoutZfarGetsAFarPlaneBeyondTheWholeScene) {
     GltfBuilder b = GltfBuilder::one_triangle();
     b.document["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}}};
@@ -211,6 +219,14 @@ TEST(GltfScene, alphaModesBlendByTheFactorAndMaskCutsBelowTheCutoff) {
     const Scene kept = read_built(b);
     ASSERT_EQ(kept.meshes.size(), 1u);
     EXPECT_FLOAT_EQ(kept.meshes[0].material.opacity, 1.0f);
+
+    // A primitive cut away is never read: its broken accessor does not matter.
+    b.document["materials"][0]["alphaCutoff"] = 0.5;
+    b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", 99}}}})}});
+    b.document["meshes"][0]["primitives"][0]["material"] = json();
+    b.document["meshes"][1]["primitives"][0]["material"] = 0;
+    EXPECT_EQ(read_built(b).meshes.size(), 1u);
+    b.document["meshes"][0]["primitives"][0]["material"] = 0;
 
     b.document["materials"][0]["alphaMode"] = "HALF";
     EXPECT_NE(read_error(b).find("/materials/0/alphaMode"), std::string::npos) << read_error(b);

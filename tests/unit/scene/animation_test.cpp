@@ -72,6 +72,8 @@ TEST(Animation, linearAndStepKeysAndClampingOutsideThem) {
     const auto step = track(KeyInterpolation::step, {1, 3}, {{0, 0, 0}, {4, 2, -2}});
     EXPECT_EQ(sample_track(step, 2.9f), glm::vec3(0, 0, 0));
     EXPECT_EQ(sample_track(step, 3.0f), glm::vec3(4, 2, -2));
+    // No interval holds a NaN: the first key, never a read before it.
+    EXPECT_EQ(sample_track(linear, std::nanf("")), glm::vec3(0, 0, 0));
 }
 
 TEST(Animation, aCubicSplineFollowsGltfsHermiteBasis) {
