@@ -12,7 +12,7 @@ namespace raster {
 namespace {
 
 constexpr int kNearest = 9728, kLinear = 9729;
-constexpr int kRepeat = 10497, kClampToEdge = 33071, kMirroredRepeat = 33648;
+constexpr int kClampToEdge = 33071, kMirroredRepeat = 33648;  // and REPEAT, 10497, the default
 
 glm::vec3 rgb(const std::vector<double>& values, const std::string& at, const std::string& file) {
     if (values.size() < 3) throw InputError(file, 0, 0, at + ": a colour needs at least 3 numbers");
