@@ -1,6 +1,8 @@
 // Whole-file input and output: bounded reads and atomic (temp file + rename) writes.
 #include "raster/core/file_io.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +14,12 @@
 #include "raster/core/errors.h"
 
 namespace raster {
+
+std::string lowercase_extension(const std::filesystem::path& path) {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    return extension;
+}
 
 std::string read_file_bytes(const std::filesystem::path& path, uint64_t max_bytes) {
     std::error_code error;

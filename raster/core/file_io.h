@@ -8,6 +8,9 @@
 
 namespace raster {
 
+// The file's extension in lower case, with its dot (".obj"); what tells a file's format when its name does.
+std::string lowercase_extension(const std::filesystem::path& path);
+
 // Reads a whole file of at most `max_bytes`. Throws InputError naming the file when it cannot.
 std::string read_file_bytes(const std::filesystem::path& path, uint64_t max_bytes);
 

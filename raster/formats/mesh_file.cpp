@@ -1,23 +1,16 @@
 // Mesh files: the loader the extension names.
 #include "raster/formats/mesh_file.h"
 
-#include <algorithm>
-#include <cctype>
 #include <string>
 
 #include "raster/core/errors.h"
+#include "raster/core/file_io.h"
 #include "raster/formats/mesh_obj.h"
 #include "raster/formats/mesh_ply.h"
 
 namespace raster {
 
 namespace {
-
-std::string lowercase_extension(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-    return extension;
-}
 
 [[noreturn]] void unknown_format(const std::filesystem::path& path, const std::string& extension) {
     throw InputError(path.string(), 0, 0, "unknown mesh format '" + extension + "' (expected .obj or .ply)");

@@ -86,14 +86,10 @@ std::optional<MeshData> read_gltf_primitive(const GltfAccessorReader& reader, co
         reader.fail(at, std::to_string(mesh.triangles.size()) + " triangles; raster reads at most " +
                             std::to_string(kMaxMeshTriangles) + " a primitive");
 
-    // Every other attribute has one element per vertex.
+    // Every other attribute has one element per vertex (their counts were checked above).
     const auto per_vertex = [&](const char* name, std::initializer_list<int> types, std::initializer_list<int> normalized,
                                 int& got) {
-        std::vector<float> values = reader.floats(attribute(primitive, name), attributes_at + name, types, normalized, got);
-        if (values.size() / static_cast<size_t>(got) != vertex_count)
-            reader.fail(attributes_at + name, std::to_string(values.size() / static_cast<size_t>(got)) +
-                                                  " elements for " + std::to_string(vertex_count) + " positions");
-        return values;
+        return reader.floats(attribute(primitive, name), attributes_at + name, types, normalized, got);
     };
     if (attribute(primitive, "NORMAL") >= 0) {
         const std::vector<float> normals = per_vertex("NORMAL", {TINYGLTF_TYPE_VEC3}, {}, components);

@@ -3,7 +3,6 @@
 #include "raster/gltf/gltf_scene.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cfloat>
 #include <cmath>
 #include <map>
@@ -13,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "raster/core/errors.h"
+#include "raster/core/file_io.h"
 #include "raster/gltf/gltf_accessors.h"
 #include "raster/gltf/gltf_animation.h"
 #include "raster/gltf/gltf_material.h"
@@ -230,7 +230,6 @@ void ModelReader::place_light(const tinygltf::Node& node, const std::string& nod
 GltfSceneParts ModelReader::read() {
     for (const std::string& extension : model_.extensionsRequired)
         if (!understood(extension)) fail("/extensionsRequired", "the file needs " + extension + ", which raster does not read");
-    std::vector<bool> visited(model_.nodes.size(), false);
     std::vector<Pending> stack;
     const std::vector<int> roots = root_nodes();
     const auto push_all = [&](const std::vector<int>& nodes, const std::string& at, int depth,
@@ -242,15 +241,14 @@ GltfSceneParts ModelReader::read() {
         }
     };
     push_all(roots, "/scenes/" + std::to_string(std::max(0, model_.defaultScene)) + "/nodes", 1, std::make_shared<const Steps>(), -1);
-    animated_index_.assign(model_.nodes.size(), -1);
+    animated_index_.assign(model_.nodes.size(), -1);  // a node with an index is one the walk has reached
     bool camera_seen = false;
     while (!stack.empty()) {
         const Pending pending = stack.back();
         stack.pop_back();
         const std::string at = "/nodes/" + std::to_string(pending.node);
-        if (visited[static_cast<size_t>(pending.node)])
+        if (animated_index_[static_cast<size_t>(pending.node)] >= 0)
             fail(at, "is reached twice; glTF nodes form trees, each node with one parent and no cycles");
-        visited[static_cast<size_t>(pending.node)] = true;
         if (pending.depth > kMaxGltfNodeDepth) fail(at, "is more than " + std::to_string(kMaxGltfNodeDepth) + " nodes deep");
         const tinygltf::Node& node = model_.nodes[static_cast<size_t>(pending.node)];
         auto steps = std::make_shared<Steps>(node_steps(node, at));
@@ -272,7 +270,6 @@ GltfSceneParts ModelReader::read() {
         // Drawn as the animation has it at time 0 (--time poses another instant).
         find_animation_span(animation_);
         scene_.animation = std::make_shared<const SceneAnimation>(std::move(animation_));
-        pose_scene(scene_, 0.0f);
     }
     if (far_from_bounds_) {
         // The reach of the scene from the eye, at 17 instants across an animation (the scene as drawn otherwise).
@@ -284,17 +281,16 @@ GltfSceneParts ModelReader::read() {
             const WorldBounds bounds = *world_bounds(scene_);
             reach = std::max(reach, 1.1 * (glm::length(bounds.centre - glm::dvec3(scene_.camera.eye)) + bounds.radius));
         }
-        if (animation) pose_scene(scene_, 0.0f);
         scene_.camera.far = static_cast<float>(std::max(reach, 2.0 * scene_.camera.near));
     }
+    pose_scene(scene_, 0.0f);  // an animated scene is drawn as its keys have it at time 0; a static one is left as is
     return parts_;
 }
 
 }  // namespace
 
 bool is_gltf_file(const std::filesystem::path& path) {
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::string extension = lowercase_extension(path);
     return extension == ".gltf" || extension == ".glb";
 }
 
