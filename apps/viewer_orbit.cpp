@@ -46,6 +46,8 @@ Camera orbit_camera(const Camera& camera, double yaw_degrees, double pitch_degre
     result.eye = glm::vec3(glm::dvec3(camera.target) + orbited);
     result.near = static_cast<float>(camera.near * std::min(1.0, distance));
     result.far = static_cast<float>(camera.far * std::max(1.0, distance));
+    // An orthographic view does not shrink with distance: the zoom scales its view volume instead.
+    result.ortho_height = static_cast<float>(camera.ortho_height * distance);
     return result;
 }
 

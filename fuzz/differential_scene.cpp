@@ -85,6 +85,19 @@ bool draw_extremes(FuzzedDataProvider& input, Scene& scene) {
     return vertices > 0 || moved;
 }
 
+// An orthographic camera in place of the drawn perspective one: its view volume as high as the perspective one's
+// frustum at the target, or a drawn height; near at 0 or as drawn.
+void draw_orthographic(FuzzedDataProvider& input, Scene& scene) {
+    Camera& camera = scene.camera;
+    constexpr float kHeights[] = {0.0f, 0.5f, 4.0f, 40.0f};  // 0: the frustum's height at the target
+    const double distance = glm::length(glm::dvec3(camera.target) - glm::dvec3(camera.eye));
+    const double framing = 2.0 * distance * std::tan(double(camera.fov_y_degrees) * (M_PI / 360.0));
+    const float drawn = input.PickValueInArray(kHeights);
+    camera.ortho_height = drawn > 0.0f ? drawn : static_cast<float>(framing);
+    if (input.ConsumeBool()) camera.near = 0.0f;
+    camera.projection = Projection::orthographic;
+}
+
 // Every triangle's radius is under kMaxExtremeRadius (the oracle's own reference geometry, as it compares with).
 bool bounds_say_something(const Scene& scene) {
     const oracle::ReferenceGeometry reference(scene, oracle::oracle_scene(scene));
@@ -114,6 +127,8 @@ std::optional<DifferentialCase> differential_case(const uint8_t* data, size_t si
     scene.settings.modes = variant.modes;
     result.modes = variant.name;
     result.extreme = draw_extremes(input, scene);
+    // Drawn after everything else, so that the inputs saved before orthographic cameras existed keep their scenes.
+    if (input.ConsumeBool()) draw_orthographic(input, scene);
     const RenderSettings& settings = scene.settings;
     if (uint64_t(settings.width) * uint64_t(settings.height) * uint64_t(settings.samples) > kMaxFrameSamples)
         return std::nullopt;
@@ -123,8 +138,8 @@ std::optional<DifferentialCase> differential_case(const uint8_t* data, size_t si
         return std::nullopt;
     }
     // Known limitation, skipped here: raster works in float clip space, so a projection that magnifies by more
-    // than ~1e3 on either axis (a field of view under ~0.1 degree, or a narrow image, whose x scale is the focal
-    // length over the aspect) amplifies float rounding past the comparator's bounds: at 1e26 the clipped polygon's
+    // than ~1e3 on either axis (a field of view under ~0.1 degree or an orthographic height under 2e-3, or a narrow
+    // image, whose x scale is the focal length over the aspect) amplifies float rounding past the comparator's bounds: at 1e26 the clipped polygon's
     // corners are lost to cancellation (quarter-screen errors), at 6e5 a sliver's barycentrics drift. A non-finite
     // projection is validate_scene's to reject.
     const glm::mat4 projection = projection_matrix(scene.camera, scene.settings.width, scene.settings.height);

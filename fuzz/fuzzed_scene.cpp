@@ -139,7 +139,12 @@ std::string describe_scene(const Scene& scene) {
     text += line;
     const Camera& c = scene.camera;
     text += "  camera eye " + vec(c.eye) + " target " + vec(c.target) + " up " + vec(c.up);
-    std::snprintf(line, sizeof line, " fov %a near %a far %a\n", double(c.fov_y_degrees), double(c.near), double(c.far));
+    if (c.projection == Projection::orthographic)
+        std::snprintf(line, sizeof line, " orthographic height %a near %a far %a\n", double(c.ortho_height),
+                      double(c.near), double(c.far));
+    else
+        std::snprintf(line, sizeof line, " fov %a near %a far %a\n", double(c.fov_y_degrees), double(c.near),
+                      double(c.far));
     text += line;
     for (const Light& light : scene.lights) text += "  light at " + vec(light.position) + "\n";
     for (const SceneMesh& mesh : scene.meshes) {

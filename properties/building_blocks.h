@@ -37,6 +37,7 @@ struct BuildingBlocks {
     glm::mat4 (*look_at_inverse)(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up) =
         look_at_model_matrix;
     glm::mat4 (*perspective)(float fov_y_degrees, float aspect, float near, float far) = perspective_matrix;
+    glm::mat4 (*orthographic)(float height, float aspect, float near, float far) = orthographic_matrix;
     glm::mat4 (*viewport)(int width, int height) = viewport_matrix;
     glm::mat3 (*normal_matrix)(const glm::mat4& model) = raster::normal_matrix;
     glm::mat4 (*model_matrix)(const ScaleRotateTranslate& chain) = model_matrix_from_scene_file;

@@ -15,6 +15,7 @@
 #include "properties/depth_precision.h"
 #include "properties/failure.h"
 #include "properties/generators.h"
+#include "properties/generators/primitives.h"
 #include "properties/printing.h"
 #include "properties/property_registry.h"
 #include "raster/transform/transform.h"
@@ -24,7 +25,6 @@
 namespace raster::properties {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 double norm1(const glm::dvec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
 
@@ -124,6 +124,35 @@ RASTER_PROPERTY(Projection, mapsNearAndFarPlanesToTheEndsOfTheDepthRange) {
     };
     check_plane(c.near, 1.0, depth_error_at_near(c.near, c.far), "near");
     check_plane(c.far, 0.0, depth_error_at_far(c.near, c.far), "far");
+}
+
+// An orthographic projection (docs/conventions.md) maps a view point (x, y, -t) to x / (height aspect / 2),
+// y / (height / 2) and reversed-Z depth (far - t) / (far - near), with w exactly 1, for any lens (the lenses'
+// near and far, near 0 too; heights from 1e-3 to 1e4) and any point of the box. Each entry is built in double from
+// floats and rounded (with the aspect's own rounding: 3u), and the product and sum add 2: so x and y are within
+// 5u of exact, relatively, and z within 5u of (t + far) / (far - near), the magnitudes of its two terms.
+RASTER_PROPERTY(Projection, orthographicMapsItsBoxToTheClipCubeWithWOne) {
+    const LensCase c = *lenses();
+    const float height = static_cast<float>(log_uniform(1e-3, 1e4));
+    const float near = coin() ? 0.0f : c.near;
+    RC_CLASSIFY(near == 0.0f, "near 0");
+    const glm::mat4 projection = impl.blocks.orthographic(height, c.aspect, near, c.far);
+    const double half_height = 0.5 * double(height), half_width = half_height * double(c.aspect);
+    const double t = double(near) + unit() * (double(c.far) - double(near));
+    const glm::dvec3 view(signed_unit() * half_width, signed_unit() * half_height, -t);
+    const glm::vec4 clip = projection * glm::vec4(glm::vec3(view), 1.0f);
+    if (clip.w != 1.0f) fail_case("w is " + float_literal(clip.w) + ", not 1");
+    const glm::dvec3 exact(double(float(view.x)) / half_width, double(float(view.y)) / half_height,
+                           (double(c.far) - double(float(view.z) * -1.0f)) / (double(c.far) - double(near)));
+    const double u = std::ldexp(1.0, -24);
+    const glm::dvec3 bound(5.0 * u * std::fabs(exact.x), 5.0 * u * std::fabs(exact.y),
+                           5.0 * u * (-double(float(view.z)) + double(c.far)) / (double(c.far) - double(near)));
+    const glm::dvec3 miss = glm::abs(glm::dvec3(clip) - exact);
+    if (!(miss.x <= bound.x && miss.y <= bound.y && miss.z <= bound.z))
+        fail_case("(" + double_literal(view.x) + ", " + double_literal(view.y) + ", " + double_literal(view.z) +
+                  ") maps to (" + float_literal(clip.x) + ", " + float_literal(clip.y) + ", " + float_literal(clip.z) +
+                  "), not (" + double_literal(exact.x) + ", " + double_literal(exact.y) + ", " + double_literal(exact.z) +
+                  ") within (" + double_literal(bound.x) + ", " + double_literal(bound.y) + ", " + double_literal(bound.z) + ")");
 }
 
 // Through the implementation's vertex stage, for any image size: points on the frustum's edges at any depth land

@@ -4,6 +4,8 @@
 - instanced_boxes.gltf (+ .bin): one box mesh placed by two nodes under a rotated group, a second mesh sharing its
   accessors with another material, a ground quad without
   normals (flat normals), a perspective camera, a point light, three metallic-roughness materials;
+- orthographic_boxes.gltf: the same boxes, buffer and light through an orthographic camera (xmag 4.5, ymag 3, znear
+  0) on a child node of a turned rig;
 - textured_quad.glb: a quad with the checker texture embedded in the GLB's binary chunk, nearest filtering, texture
   coordinates tiling it twice; no camera and no light, so raster frames and lights it;
 - strip_fan_colors.gltf: a buffer in a data URI; a triangle strip with normalized unsigned-byte RGBA colours, a
@@ -82,7 +84,7 @@ def write_json(name, document):
         f.write("\n")
 
 
-def instanced_boxes():
+def instanced_boxes(name="instanced_boxes", orthographic=False):
     buffer = Buffer()
     box_attributes, box_indices = box(buffer)
     ground = [[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]]
@@ -94,7 +96,15 @@ def instanced_boxes():
     material = lambda name, colour, metallic, roughness: {
         "name": name, "pbrMetallicRoughness": {"baseColorFactor": colour + [1.0], "metallicFactor": metallic,
                                                "roughnessFactor": roughness}}
-    write_json("instanced_boxes.gltf", {
+    perspective = {"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.5, "zfar": 50, "aspectRatio": 1.5}}
+    # Orthographic: the camera 9 units out on a rig turned 40 degrees about y, pitched 30 degrees down; near at 0.
+    ortho = {"type": "orthographic", "orthographic": {"xmag": 4.5, "ymag": 3, "znear": 0, "zfar": 30}}
+    camera_node = ({"name": "rig", "rotation": quaternion([0, 1, 0], 40), "children": [7]} if orthographic else
+                   {"name": "camera", "camera": 0, "translation": [0, 2.5, 7], "rotation": quaternion([1, 0, 0], -18)})
+    extra_nodes = ([{"name": "camera", "camera": 0, "rotation": quaternion([1, 0, 0], -30),
+                     "translation": [0, 9 * math.sin(math.radians(30)), 9 * math.cos(math.radians(30))]}]
+                   if orthographic else [])
+    write_json(name + ".gltf", {
         "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
         "extensionsUsed": ["KHR_lights_punctual"],
         "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "color": [1, 0.95, 0.9], "intensity": 40}]}},
@@ -105,11 +115,11 @@ def instanced_boxes():
             {"name": "box A", "mesh": 0, "translation": [-1.2, 0.4, 0], "scale": [0.8, 0.8, 0.8]},
             {"name": "box B", "mesh": 1, "translation": [1.2, 0.5, 0.2], "rotation": quaternion([1, 1, 0], 45)},
             {"name": "ground", "mesh": 2, "scale": [4, 1, 4]},
-            {"name": "camera", "camera": 0, "translation": [0, 2.5, 7], "rotation": quaternion([1, 0, 0], -18)},
+            camera_node,
             {"name": "lamp", "translation": [2, 5, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}},
             {"name": "box C", "mesh": 0, "translation": [0, 0.3, -1.5], "scale": [0.6, 0.6, 0.6]},
-        ],
-        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.7, "znear": 0.5, "zfar": 50, "aspectRatio": 1.5}}],
+        ] + extra_nodes,
+        "cameras": [ortho if orthographic else perspective],
         "meshes": [
             {"name": "red box", "primitives": [{"attributes": box_attributes, "indices": box_indices, "material": 0}]},
             {"name": "blue box", "primitives": [{"attributes": box_attributes, "indices": box_indices, "material": 1}]},
@@ -227,6 +237,7 @@ def animated_box():
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     instanced_boxes()
+    instanced_boxes("orthographic_boxes", orthographic=True)
     textured_quad()
     strip_fan_colors()
     animated_box()

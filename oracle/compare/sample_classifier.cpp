@@ -54,6 +54,12 @@ uint64_t ComparisonCounts::genuine_total() const {
 
 namespace {
 
+// An orthographic frame's view depth is interpolated affinely from raster's vertex depths, each off by at most
+// the polygon's depth error (absolute; weights summing to 1): an absolute term the relative roundings miss.
+double orthographic_depth_error(const ReferenceGeometry& reference, const ReferencePolygon& polygon) {
+    return reference.orthographic() ? polygon.depth_error : 0.0;
+}
+
 // The barycentric tolerance with the triangle's r-square range already found.
 glm::dvec3 barycentric_tolerance(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen,
                                  const SquareRange& range) {
@@ -80,7 +86,7 @@ AgreementTolerance agreement_tolerance(const ReferenceGeometry& reference, uint3
     AgreementTolerance tolerance;
     tolerance.bary = bary;
     tolerance.view_depth = (range.max_view_depth - range.min_view_depth) + 2.0 * depth_rounding * range.max_view_depth +
-                           reference.embree_view_depth_error(id, screen);
+                           reference.embree_view_depth_error(id, screen) + orthographic_depth_error(reference, polygon);
     return tolerance;
 }
 
@@ -124,7 +130,8 @@ SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2
         const ReferencePolygon& polygon = reference.polygon(id);
         const double bary_rounding = 2.0 * barycentric_rounding(polygon.relative_depth_error);
         const double depth_rounding = 2.0 * view_depth_rounding(polygon.relative_depth_error) *
-                                      std::min(double(raster.view_depth), double(oracle.view_depth));
+                                          std::min(double(raster.view_depth), double(oracle.view_depth)) +
+                                      orthographic_depth_error(reference, polygon);
         if (std::max({bary_gap.x, bary_gap.y, bary_gap.z}) <= bary_rounding && depth_gap <= depth_rounding)
             return SampleClass::agree;
         const AgreementTolerance tolerance = agreement_tolerance(reference, id, screen);

@@ -32,7 +32,8 @@ glm::dvec4 camera_clip_error(const CameraMatrixError& error, const OracleCamera&
     const glm::dvec3 e = error.row * q + error.translation;  // view-space error per row
     const glm::dvec3 reach = glm::abs(view) + e;
     const glm::dmat4& p = exact.projection;
-    // |P| applied to a view-space vector (x, y, z, 0): P has only the entries 00, 11, 22, 32 and 23.
+    // |P| applied to a view-space vector (x, y, z, 0): P has only the entries 00, 11, 22, 32 and 23 (perspective)
+    // or 33 (orthographic: an exact 1, so w has no error).
     auto through_p = [&](const glm::dvec3& v) {
         return glm::dvec4(std::fabs(p[0][0]) * v.x, std::fabs(p[1][1]) * v.y, std::fabs(p[2][2]) * v.z,
                           std::fabs(p[2][3]) * v.z);

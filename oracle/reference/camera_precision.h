@@ -30,7 +30,8 @@ inline constexpr int kNormalizeRoundings = 5;
 //
 // RASTER'S PROJECTION MATRIX is computed in double from the float field of view, near and far and rounded to
 // float once per entry; aspect = float(width) / float(height) adds one rounding to the first entry: every entry
-// is within gamma_3 (relative) of the oracle's (double's own error, < 1e-15, is inside the third rounding).
+// is within gamma_3 (relative) of the oracle's (double's own error, < 1e-15, is inside the third rounding). An
+// orthographic matrix is built the same way from the float height, near and far, and its w row (0 0 0 1) is exact.
 inline constexpr int kProjectionRoundings = 3;
 
 struct CameraMatrixError {

@@ -61,9 +61,13 @@ SampleLayers trace_layers(const Scene& scene, const OracleScene& geometry, const
         for (size_t i = 0; i < row_samples; ++i) {
             const int px = static_cast<int>(i / static_cast<size_t>(samples));
             const int s = static_cast<int>(i % static_cast<size_t>(samples));
-            const glm::dvec3 direction = ray_direction(geometry.camera, glm::dvec2(px, py) + offsets[s]);
+            const glm::dvec2 screen = glm::dvec2(px, py) + offsets[s];
+            const glm::dvec3 direction = ray_direction(geometry.camera, screen);
+            const glm::dvec3 origin = ray_origin(geometry.camera, screen);  // the eye, 0, unless orthographic
             RTCRayHit ray{};
-            ray.ray.org_x = ray.ray.org_y = ray.ray.org_z = 0.0f;
+            ray.ray.org_x = static_cast<float>(origin.x);
+            ray.ray.org_y = static_cast<float>(origin.y);
+            ray.ray.org_z = static_cast<float>(origin.z);
             ray.ray.dir_x = static_cast<float>(direction.x);
             ray.ray.dir_y = static_cast<float>(direction.y);
             ray.ray.dir_z = static_cast<float>(direction.z);  // exactly -1: t is the view depth

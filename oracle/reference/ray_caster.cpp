@@ -24,11 +24,6 @@ constexpr size_t kPacketSize = 8;  // RTCRayHit8
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Front-facing seen from the eye at the view-space origin: counter-clockwise in NDC is a normal pointing back at
-// the eye, i.e. dot(normal, vertex) < 0 (perspective keeps the orientation of what lies in front of the eye).
-bool faces_eye(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-    return glm::dot(glm::cross(b - a, c - a), a) < 0.0;
-}
 
 }  // namespace
 
@@ -44,7 +39,8 @@ std::vector<uint32_t> traced_triangles(const Scene& scene, const OracleScene& ge
         if (!finite(glm::vec3(geometry.view[v[0]])) || !finite(glm::vec3(geometry.view[v[1]])) ||
             !finite(glm::vec3(geometry.view[v[2]])))
             continue;
-        if (scene.settings.cull_backfaces && !faces_eye(geometry.view[v[0]], geometry.view[v[1]], geometry.view[v[2]]))
+        if (scene.settings.cull_backfaces &&
+            !faces_viewer(geometry.camera, geometry.view[v[0]], geometry.view[v[1]], geometry.view[v[2]]))
             continue;
         out.push_back(id);
     }
@@ -86,8 +82,12 @@ OracleStats render_oracle(const Scene& scene, const OracleScene& geometry, const
                 const size_t i = begin + std::min(k, count - 1);  // inactive lanes repeat a real ray
                 const int px = static_cast<int>(i / static_cast<size_t>(samples));
                 const int s = static_cast<int>(i % static_cast<size_t>(samples));
-                const glm::dvec3 direction = ray_direction(geometry.camera, glm::dvec2(px, py) + offsets[s]);
-                packet.ray.org_x[k] = packet.ray.org_y[k] = packet.ray.org_z[k] = 0.0f;
+                const glm::dvec2 screen = glm::dvec2(px, py) + offsets[s];
+                const glm::dvec3 direction = ray_direction(geometry.camera, screen);
+                const glm::dvec3 origin = ray_origin(geometry.camera, screen);  // the eye, 0, unless orthographic
+                packet.ray.org_x[k] = static_cast<float>(origin.x);
+                packet.ray.org_y[k] = static_cast<float>(origin.y);
+                packet.ray.org_z[k] = static_cast<float>(origin.z);
                 packet.ray.dir_x[k] = static_cast<float>(direction.x);
                 packet.ray.dir_y[k] = static_cast<float>(direction.y);
                 packet.ray.dir_z[k] = static_cast<float>(direction.z);  // exactly -1: t is the view depth

@@ -29,11 +29,17 @@ struct ClipVertex {
 
 enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };
 
-// The clip planes of the documented conventions (docs/conventions.md) (w >= near, w <= far, |x|, |y| <= side w), >= 0 inside.
-double plane_distance(int plane, const glm::dvec4& p, double near, double far, double side) {
+// The clip planes of the documented conventions (docs/conventions.md) (w >= near, w <= far, |x|, |y| <= side w;
+// orthographic: z <= w, z >= 0), >= 0 inside.
+struct Planes {
+    double near, far, side;
+    bool orthographic;
+};
+double plane_distance(int plane, const glm::dvec4& p, const Planes& planes) {
+    const double side = planes.side;
     switch (plane) {
-        case kNear: return p.w - near;
-        case kFar: return far - p.w;
+        case kNear: return planes.orthographic ? p.w - p.z : p.w - planes.near;
+        case kFar: return planes.orthographic ? p.z : planes.far - p.w;
         case kLeft: return p.x + side * p.w;
         case kRight: return side * p.w - p.x;
         case kBottom: return p.y + side * p.w;
@@ -42,10 +48,11 @@ double plane_distance(int plane, const glm::dvec4& p, double near, double far, d
 }
 
 // How far a vertex's distance to the plane can move with its error bound e: |n|.e.
-double plane_distance_error(int plane, const glm::dvec4& e, double side) {
+double plane_distance_error(int plane, const glm::dvec4& e, const Planes& planes) {
+    const double side = planes.side;
     switch (plane) {
-        case kNear:
-        case kFar: return e.w;
+        case kNear: return planes.orthographic ? e.w + e.z : e.w;
+        case kFar: return planes.orthographic ? e.z : e.w;
         case kLeft:
         case kRight: return e.x + side * e.w;
         default: return e.y + side * e.w;
@@ -57,15 +64,15 @@ EdgeKind plane_edge_kind(int plane) {
 }
 
 // Sutherland-Hodgman in double, keeping track of which plane made each edge.
-std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double near, double far, double side) {
+std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, const Planes& planes) {
     for (int plane = 0; plane < kPlaneCount && polygon.size() >= 3; ++plane) {
         std::vector<ClipVertex> out;
         const size_t n = polygon.size();
         for (size_t i = 0; i < n; ++i) {
             const ClipVertex& current = polygon[i];
             const ClipVertex& next = polygon[(i + 1) % n];
-            const double d_current = plane_distance(plane, current.clip, near, far, side);
-            const double d_next = plane_distance(plane, next.clip, near, far, side);
+            const double d_current = plane_distance(plane, current.clip, planes);
+            const double d_next = plane_distance(plane, next.clip, planes);
             const bool current_in = d_current >= 0.0, next_in = d_next >= 0.0;
             if (current_in) out.push_back(current);
             if (current_in == next_in) continue;
@@ -78,8 +85,8 @@ std::vector<ClipVertex> clip_exactly(std::vector<ClipVertex> polygon, double nea
             cut.clip = in.clip + t * (outside.clip - in.clip);
             cut.magnitudes = glm::max(in.magnitudes, outside.magnitudes);
             cut.error = clip_step_error(
-                {in.clip, in.error, in.magnitudes, d_in, plane_distance_error(plane, in.error, side)},
-                {outside.clip, outside.error, outside.magnitudes, d_out, plane_distance_error(plane, outside.error, side)});
+                {in.clip, in.error, in.magnitudes, d_in, plane_distance_error(plane, in.error, planes)},
+                {outside.clip, outside.error, outside.magnitudes, d_out, plane_distance_error(plane, outside.error, planes)});
             // Leaving the half-space, the next edge runs along the plane; entering it, along the original edge.
             cut.outgoing = current_in ? plane_edge_kind(plane) : current.outgoing;
             out.push_back(cut);
@@ -157,7 +164,8 @@ double max_norm_distance_to_segment(const glm::dvec2& p, const glm::dvec2& a, co
 ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geometry)
     : ReferenceGeometry(scene, geometry,
                         ViewVolume{scene.camera.near, scene.camera.far, scene.settings.snap_bits,
-                                   scene.settings.cull_backfaces, 1.0}) {}
+                                   scene.settings.cull_backfaces, 1.0,
+                                   scene.camera.projection == Projection::orthographic}) {}
 
 ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geometry, const ViewVolume& volume)
     : camera_(geometry.camera), near_(volume.near), far_(volume.far) {
@@ -194,8 +202,7 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
         triangles_[id] = {view_vertex[0], edge1, edge2, {oracle_error[0], oracle_error[1], oracle_error[2]},
                           plane_noise(edge1, edge2, vertex_magnitude)};
         ReferencePolygon& out = polygons_[id];
-        const glm::dvec3 normal = glm::cross(triangles_[id].edge1, triangles_[id].edge2);
-        out.culled = volume.cull_backfaces && !(glm::dot(normal, view_vertex[0]) < 0.0);
+        out.culled = volume.cull_backfaces && !faces_viewer(camera_, view_vertex[0], view_vertex[1], view_vertex[2]);
         if (volume.cull_backfaces) {
             const glm::dvec4 clip[3] = {polygon[0].clip, polygon[1].clip, polygon[2].clip};
             const glm::dvec4 error[3] = {polygon[0].error, polygon[1].error, polygon[2].error};
@@ -203,8 +210,10 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
         }
         out.first = static_cast<uint32_t>(screen_.size());
         const std::vector<ClipVertex> original = polygon;
-        const bool unbounded = passes_by_the_eye(original, near_);
-        const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), near_, far_, volume.side);
+        // An orthographic w is 1: no point comes near the eye's singularity.
+        const bool unbounded = !volume.orthographic && passes_by_the_eye(original, near_);
+        const Planes planes{near_, far_, volume.side, volume.orthographic};
+        const std::vector<ClipVertex> clipped = clip_exactly(std::move(polygon), planes);
         out.count = static_cast<uint32_t>(clipped.size());
         out.radius = snap;
         for (const ClipVertex& v : clipped) {
@@ -216,10 +225,15 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
         // where a float clip kept a sliver. A vertex within its w error of the eye has no bounded screen
         // position at all (screen_error is infinite), and then neither has anything about the triangle.
         for (const ClipVertex& v : clipped.empty() ? original : clipped) {
-            if (clipped.empty() && !(v.clip.w + v.error.w >= near_)) continue;
+            if (clipped.empty() && !(plane_distance(kNear, v.clip, planes) + plane_distance_error(kNear, v.error, planes) >= 0.0))
+                continue;
             const glm::dvec2 error = screen_error(v.clip, v.error, camera_.width, camera_.height);
             out.radius = std::max(out.radius, snap + std::max(error.x, error.y));
-            out.depth_error = std::max(out.depth_error, v.error.w);
+            // Orthographic: raster reads t = far - z (far - near) from its float z, in double, and rounds it (1).
+            const double depth_error =
+                volume.orthographic ? (v.error.z + v.error.w) * (far_ - near_) + float_gamma(1) * std::max(std::fabs(far_), std::fabs(near_))
+                                    : v.error.w;
+            out.depth_error = std::max(out.depth_error, depth_error);
             out.relative_depth_error = std::max(out.relative_depth_error, relative_depth_error(v.clip.w, v.error.w));
             out.reversed_z_error = std::max(out.reversed_z_error, reversed_z_error(v.clip, v.error));
         }
@@ -233,7 +247,8 @@ std::span<const glm::dvec2> ReferenceGeometry::screen_vertices(uint32_t id) cons
 }
 
 ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
-    // Moeller-Trumbore from the eye (the view-space origin); the direction has z = -1, so t is the view depth.
+    // Moeller-Trumbore from the ray's origin (the eye; orthographic, the plane z = 0); the direction has z = -1,
+    // so t is the view depth.
     const ViewTriangle& tri = triangles_[id];
     const glm::dvec3 direction = ray_direction(camera_, screen);
     const glm::dvec3 p = glm::cross(direction, tri.edge2);
@@ -242,12 +257,13 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
     // Within the plane noise (precision.h) the double geometry cannot place the hit: none (NaN and inf included).
     if (!(std::fabs(determinant) > tri.plane_noise * glm::length(direction)) || !std::isfinite(determinant))
         return hit;
-    const glm::dvec3 to_eye = -tri.a;
-    const glm::dvec3 q = glm::cross(to_eye, tri.edge1);
-    const double u = glm::dot(to_eye, p) / determinant;
+    const glm::dvec3 to_origin = ray_origin(camera_, screen) - tri.a;
+    const glm::dvec3 q = glm::cross(to_origin, tri.edge1);
+    const double u = glm::dot(to_origin, p) / determinant;
     const double v = glm::dot(direction, q) / determinant;
     const double t = glm::dot(tri.edge2, q) / determinant;
-    if (!(t > 0.0)) return hit;
+    // A perspective ray starts at the eye; an orthographic one is a whole line, cut by near and far alone.
+    if (!(camera_.orthographic ? std::isfinite(t) : t > 0.0)) return hit;
     hit.valid = true;
     hit.view_depth = t;
     hit.reversed_z = reversed_z(camera_, t);
@@ -257,9 +273,20 @@ ExactHit ReferenceGeometry::hit(uint32_t id, const glm::dvec2& screen) const {
 
 ReferenceGeometry::EmbreeRay ReferenceGeometry::embree_ray(uint32_t id, const glm::dvec2& screen) const {
     const ViewTriangle& tri = triangles_[id];
-    return {{tri.a, tri.a + tri.edge1, tri.a + tri.edge2},
-            ray_direction(camera_, screen),
-            tri.oracle_error};
+    EmbreeRay ray{{tri.a, tri.a + tri.edge1, tri.a + tri.edge2}, ray_direction(camera_, screen), {}};
+    for (int k = 0; k < 3; ++k) ray.vertex_error[k] = tri.oracle_error[k];
+    if (!camera_.orthographic) return ray;  // the origin is 0: Embree's v - origin is exact
+    // Embree takes the origin o rounded to float (off by u |o|) and forms v - o in float (one rounding of a value
+    // within |v - o| + e + u |o|): precision.h's bounds, written for an origin at 0, hold for the vertices relative
+    // to o with these errors.
+    const glm::dvec3 origin = ray_origin(camera_, screen);
+    const double u = float_gamma(1);
+    for (int k = 0; k < 3; ++k) {
+        ray.vertices[k] -= origin;
+        const glm::dvec3 moved = tri.oracle_error[k] + u * glm::abs(origin);
+        ray.vertex_error[k] = moved + u * (glm::abs(ray.vertices[k]) + moved);
+    }
+    return ray;
 }
 
 glm::dvec3 ReferenceGeometry::embree_barycentric_error(uint32_t id, const glm::dvec2& screen) const {
@@ -281,10 +308,8 @@ double ReferenceGeometry::embree_view_depth_error(uint32_t id, const glm::dvec2&
 
 double ReferenceGeometry::embree_reversed_z_error(uint32_t id, const glm::dvec2& screen) const {
     const ExactHit exact = hit(id, screen);
-    const double error = embree_view_depth_error(id, screen, exact);
-    if (!(error < exact.view_depth)) return std::numeric_limits<double>::infinity();  // also: no valid hit
-    // |P32 / t' - P32 / t| for |t' - t| <= error.
-    return std::fabs(camera_.projection[3][2]) * error / (exact.view_depth * (exact.view_depth - error));
+    const double error = embree_view_depth_error(id, screen, exact);  // infinite without a valid hit
+    return reversed_z_error_of_view_depth(camera_, exact.view_depth, error);
 }
 
 bool ReferenceGeometry::embree_may_cover(uint32_t id, const glm::dvec2& screen) const {

@@ -25,7 +25,8 @@ struct ReferencePolygon {
     bool culled = false;            // back-facing in a scene that culls back faces: no renderer may show it
     bool facing_uncertain = false;  // culling on, and its facing is within the float error (precision.h, 7)
     double radius = 0;              // r: snap + float screen error of its vertices, px, max norm
-    double depth_error = 0;         // largest absolute w error of its clipped vertices (clip boundary)
+    double depth_error = 0;         // largest absolute view depth error of its clipped vertices (clip boundary):
+                                    // their w error, or, orthographic, their z error times far - near
     double relative_depth_error = 0;  // largest relative 1/w error of its clipped vertices
     double reversed_z_error = 0;    // largest reversed-Z error of its clipped vertices, float roundings included
 };
@@ -59,6 +60,7 @@ struct ViewVolume {
     int snap_bits = 8;
     bool cull_backfaces = false;
     double side = 1.0;
+    bool orthographic = false;  // w = 1, near and far on z (docs/conventions.md "Clipping")
 };
 
 class ReferenceGeometry {
@@ -74,6 +76,7 @@ public:
     EdgeKind edge_kind(uint32_t id, uint32_t edge) const { return edge_kinds_[polygons_[id].first + edge]; }
     double near() const { return near_; }
     double far() const { return far_; }
+    bool orthographic() const { return camera_.orthographic; }
 
     ExactHit hit(uint32_t id, const glm::dvec2& screen) const;
     SquareRange range_around(uint32_t id, const glm::dvec2& screen, double half_side) const;
@@ -107,9 +110,9 @@ private:
     };
     // What Embree's evaluation bounds need for one triangle and one sample's ray.
     struct EmbreeRay {
-        glm::dvec3 vertices[3];            // view space, exact
+        glm::dvec3 vertices[3];            // view space relative to the ray's origin, exact
         glm::dvec3 direction;              // the camera ray through the sample (z = -1)
-        const glm::dvec3* vertex_error;    // the oracle's float vertex errors, 3 of them
+        glm::dvec3 vertex_error[3];        // how far Embree's float vertices relative to the origin can be off
     };
     EmbreeRay embree_ray(uint32_t id, const glm::dvec2& screen) const;
     // embree_view_depth_error with the exact hit at `screen` already found.

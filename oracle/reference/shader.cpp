@@ -240,8 +240,13 @@ OracleShader::LitTerms OracleShader::light(const Interval3& position, const Inte
     terms.specular = zero;
     // The sums' magnitudes, for the rounding of the L + 1 term sums.
     Interval3 diffuse_magnitude = terms.diffuse, specular_magnitude = zero;
-    const Interval3 to_eye =
-        float_unit(after_roundings(Interval3(glm::dvec3(scene_.camera.eye)) - position, kDifferenceRoundings));
+    // The view vector (docs/conventions.md "Lighting"): towards the eye; orthographic, the back direction
+    // normalize(eye - target) at every point.
+    const Camera& camera = scene_.camera;
+    const Interval3 to_eye = float_unit(after_roundings(
+        Interval3(glm::dvec3(camera.eye)) -
+            (camera.projection == Projection::orthographic ? Interval3(glm::dvec3(camera.target)) : position),
+        kDifferenceRoundings));
     for (size_t index : lights) {
         const Light& light = scene_.lights[index];
         const Interval3 offset = after_roundings(Interval3(glm::dvec3(light.position)) - position, kDifferenceRoundings);

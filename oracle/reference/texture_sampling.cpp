@@ -17,12 +17,15 @@ UvDerivatives ray_differential(const OracleCamera& camera, const glm::dvec3 view
     const glm::dvec3 n = glm::cross(e1, e2);
     const double n2 = glm::dot(n, n);
     const glm::dvec3 p = bary.x * view[0] + bary.y * view[1] + bary.z * view[2];
-    const double t = -p.z;              // view depth: the ray is D = P / t, with D.z = -1
-    const glm::dvec3 direction = p / t;
-    // A pixel step right moves the view-space direction by 2 aspect / (focal width) in x; a step down by
-    // -2 / (focal height) in y (ndc y points up, pixel y down).
-    const glm::dvec3 step_x(2.0 * camera.aspect / (camera.focal * camera.width), 0.0, 0.0);
-    const glm::dvec3 step_y(0.0, -2.0 / (camera.focal * camera.height), 0.0);
+    // The hit P = O + t D of the ray through the point (D.z = -1). Perspective: O = 0 and a pixel step right moves
+    // D by 2 aspect / (focal width) in x, a step down by -2 / (focal height) in y (ndc y points up, pixel y down),
+    // so P moves by t (dD - D n.dD / n.D). Orthographic: D = (0, 0, -1) and a step moves O by 2 half_height
+    // aspect / width in x, -2 half_height / height in y, so P moves by dO - D n.dO / n.D.
+    const double t = camera.orthographic ? 1.0 : -p.z;
+    const glm::dvec3 direction = camera.orthographic ? glm::dvec3(0.0, 0.0, -1.0) : p / t;
+    const double scale = camera.orthographic ? camera.half_height : 1.0 / camera.focal;
+    const glm::dvec3 step_x(2.0 * camera.aspect * scale / camera.width, 0.0, 0.0);
+    const glm::dvec3 step_y(0.0, -2.0 * scale / camera.height, 0.0);
     auto bary_step = [&](const glm::dvec3& d_direction) {
         const glm::dvec3 dp = t * (d_direction - direction * (glm::dot(n, d_direction) / glm::dot(n, direction)));
         const double b1 = glm::dot(glm::cross(dp, e2), n) / n2, b2 = glm::dot(glm::cross(e1, dp), n) / n2;

@@ -36,7 +36,7 @@ void read_seed003_scene(const Node& root, const DocumentReader& reader, const Sc
         reader.fail(near, "near and far must both be negative z values (the book's convention) or both distances");
     }
     if (const auto problem = camera_problem(camera))
-        reader.fail(camera_node_to_blame({root, eye, lookat, up, fov, near, far}, problem->field), problem->message);
+        reader.fail(camera_node_to_blame({root, eye, lookat, up, fov, near, far, root}, problem->field), problem->message);
 
     if (const Node& lights = reader.optional(root, "lights"); lights.is_defined()) {
         reader.expect_sequence(lights, "lights");

@@ -75,6 +75,7 @@ const Node& camera_node_to_blame(const CameraNodes& nodes, CameraField field) {
         case CameraField::fov: return first_defined(nodes.fov, nodes.map);
         case CameraField::near: return first_defined(nodes.near, nodes.map);
         case CameraField::far: return first_defined(nodes.far, nodes.near);
+        case CameraField::ortho_height: return first_defined(nodes.height, nodes.map);
     }
     return nodes.map;
 }
@@ -98,18 +99,31 @@ void read_image(const Node& node, const DocumentReader& reader, RenderSettings& 
 
 void read_camera(const Node& node, const DocumentReader& reader, Camera& camera) {
     reader.expect_map(node, "camera");
-    reader.check_keys(node, {"eye", "target", "up", "fov", "near", "far"});
+    reader.check_keys(node, {"eye", "target", "up", "fov", "near", "far", "projection", "height"});
     const Node &eye = reader.optional(node, "eye"), &target = reader.optional(node, "target"),
                &up = reader.optional(node, "up"), &fov = reader.optional(node, "fov"),
-               &near = reader.optional(node, "near"), &far = reader.optional(node, "far");
+               &near = reader.optional(node, "near"), &far = reader.optional(node, "far"),
+               &projection = reader.optional(node, "projection"), &height = reader.optional(node, "height");
+    if (projection.is_defined()) {
+        const std::string kind = reader.string(projection, "camera projection");
+        if (kind == "orthographic") camera.projection = Projection::orthographic;
+        else if (kind == "perspective") camera.projection = Projection::perspective;
+        else reader.fail(projection, "camera projection must be perspective or orthographic, got '" + kind + "'");
+    }
+    const bool orthographic = camera.projection == Projection::orthographic;
+    if (fov.is_defined() && orthographic) reader.fail(fov, "camera fov is for a perspective camera; an orthographic one takes height");
+    if (height.is_defined() && !orthographic)
+        reader.fail(height, "camera height is for an orthographic camera (projection: orthographic); a perspective one takes fov");
     if (eye.is_defined()) camera.eye = reader.vec3(eye, "camera eye");
     if (target.is_defined()) camera.target = reader.vec3(target, "camera target");
     if (up.is_defined()) camera.up = reader.vec3(up, "camera up");
     if (fov.is_defined()) camera.fov_y_degrees = reader.finite_float(fov, "camera fov");
+    if (height.is_defined()) camera.ortho_height = reader.finite_float(height, "camera height");
     if (near.is_defined()) camera.near = reader.finite_float(near, "camera near");
     if (far.is_defined()) camera.far = reader.finite_float(far, "camera far");
     if (const auto problem = camera_problem(camera))
-        reader.fail(camera_node_to_blame({node, eye, target, up, fov, near, far}, problem->field), problem->message);
+        reader.fail(camera_node_to_blame({node, eye, target, up, fov, near, far, height}, problem->field),
+                    problem->message);
 }
 
 // The image size, sample count and frame memory together, once both sections are read, at the value to change.

@@ -46,7 +46,7 @@ void read_raster_graph(const Node& root, const DocumentReader& reader, const Sce
 // for a camera problem: the value's own node, else the node it is relative to (target and up: the eye; far: near),
 // else the camera's map.
 struct CameraNodes {
-    const Node &map, &eye, &target, &up, &fov, &near, &far;
+    const Node &map, &eye, &target, &up, &fov, &near, &far, &height;
 };
 const Node& camera_node_to_blame(const CameraNodes& nodes, CameraField field);
 

@@ -18,8 +18,12 @@ enum Plane { kNear, kFar, kLeft, kRight, kBottom, kTop, kPlaneCount };
 inline double plane_distance(int plane, const glm::vec4& p, const ClipVolume& volume) {
     const double x = p.x, y = p.y, w = p.w;
     switch (plane) {
-        case kNear: return w - double(volume.near);
-        case kFar: return double(volume.far) - w;
+        case kNear:
+            if (volume.orthographic) return w - double(p.z);  // z <= w
+            return w - double(volume.near);
+        case kFar:
+            if (volume.orthographic) return double(p.z);  // z >= 0
+            return double(volume.far) - w;
         case kLeft: return x + volume.side * w;
         case kRight: return volume.side * w - x;
         case kBottom: return y + volume.side * w;
@@ -103,9 +107,11 @@ ClippedPolygon clip_triangle(const glm::vec4& a, const glm::vec4& b, const glm::
         }
     }
     if (input != &result.vertices) result.vertices = *input;
-    // Rounding in the intersection can leave w a hair below `near`; pin it so the divide stays safe.
-    for (int i = 0; i < count; ++i)
-        if (result.vertices[i].position.w < volume.near) result.vertices[i].position.w = volume.near;
+    // Rounding in the intersection can leave w a hair below `near`; pin it so the divide stays safe. (An
+    // orthographic w is 1, and every intersection of 1 and 1 is 1.)
+    if (!volume.orthographic)
+        for (int i = 0; i < count; ++i)
+            if (result.vertices[i].position.w < volume.near) result.vertices[i].position.w = volume.near;
     result.count = count;
     return result;
 }

@@ -13,10 +13,13 @@ namespace raster {
 //   left   x >= -w          right  x <= w
 //   bottom y >= -w          top    y <= w
 // Near and far are tested on w itself rather than on z: the same planes, without the cancellation of w - z.
+// An orthographic projection has w = 1 everywhere and the view depth in z (reversed-Z, 1 at near, 0 at far), so
+// there near and far are z <= w and z >= 0.
 struct ClipVolume {
     float near = 0.1f;
     float far = 100.0f;
     double side = 1.0;  // the side planes are x, y = +-side * w: 1 clips to the viewport, > 1 is a guard band
+    bool orthographic = false;
 };
 
 // A clipped vertex: its clip-space position and its barycentric coordinates in the ORIGINAL triangle (clipping

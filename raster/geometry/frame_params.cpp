@@ -32,7 +32,8 @@ FrameParams frame_params_for(const Scene& scene, std::vector<glm::vec2> sample_o
     frame.width = settings.width;
     frame.height = settings.height;
     frame.snap_bits = settings.snap_bits;
-    frame.clip = ClipVolume{scene.camera.near, scene.camera.far, side_factor(settings)};
+    frame.clip = ClipVolume{scene.camera.near, scene.camera.far, side_factor(settings),
+                            scene.camera.projection == Projection::orthographic};
     frame.edges = settings.modes.edges;
     frame.interpolation = settings.modes.interpolation;
     frame.depth = settings.modes.depth;

@@ -38,6 +38,12 @@ void round_edges_to_float(TriangleSetup& t) {
     }
 }
 
+// The view depth an affine setup interpolates at a vertex: 1 / (1 / w), or an orthographic frame's, read from z.
+double vertex_view_depth(const ScreenPoint& p, bool orthographic) {
+    if (orthographic) return static_cast<double>(p.ortho_view_depth);
+    return 1.0 / static_cast<double>(p.inv_w);
+}
+
 }  // namespace
 
 double depth_key(double reversed_z, DepthFormat format) {
@@ -73,9 +79,13 @@ ScreenPoint project_to_screen(const glm::vec4& p, const FrameParams& frame, cons
     const double inv_w = 1.0 / static_cast<double>(p.w);  // w >= near > 0 after clipping
     const glm::dvec2 position =
         screen_from_ndc(static_cast<double>(p.x) * inv_w, static_cast<double>(p.y) * inv_w, frame.width, frame.height);
+    const float ortho_view_depth =
+        frame.clip.orthographic
+            ? static_cast<float>(double(frame.clip.far) - double(p.z) * (double(frame.clip.far) - double(frame.clip.near)))
+            : 0.0f;
     return {snap(position.x, grid.snap_scale, grid.shift, grid.low_x, grid.high_x),
             snap(position.y, grid.snap_scale, grid.shift, grid.low_y, grid.high_y),
-            depth_key(static_cast<double>(p.z) * inv_w, frame.depth), static_cast<float>(inv_w)};
+            depth_key(static_cast<double>(p.z) * inv_w, frame.depth), static_cast<float>(inv_w), ortho_view_depth};
 }
 
 int setup_polygon(const ClippedPolygon& polygon, uint32_t triangle_id, const FrameParams& frame,
@@ -111,14 +121,15 @@ int setup_screen_triangle(std::array<const ScreenPoint*, 3> v, std::array<const 
     setup.triangle_id = triangle_id;
     setup.area2 = area2;
     setup.inv_area2 = 1.0 / static_cast<double>(area2);
-    setup.affine = frame.interpolation == Interpolation::affine;
+    // An orthographic projection's w is 1: perspective correction is the identity, and the view depth is affine.
+    setup.affine = frame.interpolation == Interpolation::affine || frame.clip.orthographic;
     setup.depth_fixed24 = frame.depth == DepthFormat::fixed24;
     for (int i = 0; i < 3; ++i) {
         setup.x[i] = v[i]->x;
         setup.y[i] = v[i]->y;
         setup.depth[i] = v[i]->depth;
         setup.inv_w[i] = v[i]->inv_w;
-        if (setup.affine) setup.vertex_depth[i] = 1.0 / static_cast<double>(v[i]->inv_w);
+        if (setup.affine) setup.vertex_depth[i] = vertex_view_depth(*v[i], frame.clip.orthographic);
         setup.bary[i] = *bary[i];
     }
     for (int i = 0; i < 3; ++i) {

@@ -29,9 +29,9 @@ struct TriangleSetup {
     int min_x = 0, min_y = 0, max_x = -1, max_y = -1;  // pixel bounding box, inclusive, inside the viewport
     double depth[3] = {};        // the depth test's key at each vertex, larger is nearer (depth_key)
     float inv_w[3] = {};         // 1 / view depth at each vertex
-    double vertex_depth[3] = {}; // affine setups only: view depth at each vertex, 1 / inv_w
+    double vertex_depth[3] = {}; // affine setups only: view depth at each vertex (1 / inv_w; orthographic: from z)
     glm::vec3 bary[3];           // each vertex's barycentric coordinates in the original triangle
-    bool affine = false;         // Interpolation::affine: barycentrics linear in screen space
+    bool affine = false;         // Interpolation::affine or an orthographic camera: barycentrics linear on screen
     bool depth_fixed24 = false;  // DepthFormat::fixed24: the interpolated key is rounded to an integer
 };
 
@@ -44,11 +44,12 @@ inline constexpr double kFixed24Levels = 16777215.0;
 double depth_key(double reversed_z, DepthFormat format);
 
 // A vertex after the divide and the viewport transform: snapped to frame.snap_bits on the 1/2^fixed_bits grid,
-// its depth key, and 1 / w.
+// its depth key, and 1 / w; for an orthographic camera (w = 1) also its view depth, far - z (far - near).
 struct ScreenPoint {
     int64_t x, y;
     double depth;
     float inv_w;
+    float ortho_view_depth = 0.0f;
 };
 
 // The frame's snapping, formed once: the snapped range (the viewport, or the guard band) and the grid's scale.

@@ -68,6 +68,11 @@ private:
     void place_mesh(int mesh_index, const std::string& node_at, const Steps& steps);
     void place_camera(int camera_index, const std::string& node_at, const Steps& steps);
     void place_light(const tinygltf::Node& node, const std::string& node_at, const Steps& steps);
+    // The camera's width over height sets the image's width; its height stays kDefaultImageHeight.
+    void set_image_aspect(double ratio) {
+        const double width = std::clamp(kDefaultImageHeight * ratio, 1.0, static_cast<double>(kMaxImageSide));
+        scene_.settings.width = static_cast<int>(std::lround(width));
+    }
 
     const tinygltf::Model& model_;
     std::string file_;
@@ -180,24 +185,35 @@ void ModelReader::place_camera(int camera_index, const std::string& node_at, con
         fail(node_at + "/camera", "there is no camera " + std::to_string(camera_index));
     const tinygltf::Camera& camera = model_.cameras[static_cast<size_t>(camera_index)];
     const std::string at = "/cameras/" + std::to_string(camera_index);
-    if (camera.type != "perspective") {
-        warnings_.say(at + ": orthographic cameras are not supported yet; the scene is framed by raster's default camera");
+    Camera& out = scene_.camera;
+    if (camera.type == "orthographic") {
+        const tinygltf::OrthographicCamera& o = camera.orthographic;
+        if (!(o.xmag > 0.0)) fail(at + "/orthographic/xmag", "must be > 0, got " + std::to_string(o.xmag));
+        if (!(o.ymag > 0.0)) fail(at + "/orthographic/ymag", "must be > 0, got " + std::to_string(o.ymag));
+        if (!(o.znear >= 0.0)) fail(at + "/orthographic/znear", "must be >= 0, got " + std::to_string(o.znear));
+        if (!(o.zfar > o.znear)) fail(at + "/orthographic/zfar", "must be > znear, got " + std::to_string(o.zfar));
+        camera_from_pose(compose_steps(steps), out);
+        animation_.camera_node = current_animated_;
+        out.projection = Projection::orthographic;
+        out.ortho_height = to_float(2.0 * o.ymag, at + "/orthographic/ymag");
+        out.near = to_float(o.znear, at + "/orthographic/znear");
+        out.far = to_float(o.zfar, at + "/orthographic/zfar");
+        set_image_aspect(o.xmag / o.ymag);
+        parts_.camera = true;
         return;
     }
+    if (camera.type != "perspective") fail(at + "/type", "must be perspective or orthographic, got '" + camera.type + "'");
     const tinygltf::PerspectiveCamera& p = camera.perspective;
     if (!(p.yfov > 0.0 && p.yfov < kPi)) fail(at + "/perspective/yfov", "must be in (0, pi), got " + std::to_string(p.yfov));
     if (!(p.znear > 0.0)) fail(at + "/perspective/znear", "must be > 0, got " + std::to_string(p.znear));
     if (p.zfar != 0.0 && !(p.zfar > p.znear)) fail(at + "/perspective/zfar", "must be > znear, got " + std::to_string(p.zfar));
-    Camera& out = scene_.camera;
     camera_from_pose(compose_steps(steps), out);
     animation_.camera_node = current_animated_;
     out.fov_y_degrees = to_float(p.yfov * 180.0 / kPi, at + "/perspective/yfov");
     out.near = to_float(p.znear, at + "/perspective/znear");
     far_from_bounds_ = p.zfar == 0.0;  // an infinite projection: far is set to hold the scene once it is read
     if (!far_from_bounds_) out.far = to_float(p.zfar, at + "/perspective/zfar");
-    if (p.aspectRatio > 0.0)
-        scene_.settings.width = static_cast<int>(std::clamp(std::lround(kDefaultImageHeight * p.aspectRatio), 1L,
-                                                            static_cast<long>(kMaxImageSide)));
+    if (p.aspectRatio > 0.0) set_image_aspect(p.aspectRatio);
     parts_.camera = true;
 }
 

@@ -34,13 +34,22 @@ enum class SamplePattern {
 };
 
 // How the camera maps view space to clip space.
+enum class Projection {
+    perspective,   // rays from the eye; fov_y_degrees is the vertical field of view
+    orthographic,  // rays parallel to the view direction; ortho_height is the view volume's height
+};
+
+// For an orthographic camera, the view volume is the box ortho_height high and ortho_height * aspect wide around
+// the line from `eye` towards `target`, from view depth near to far; near may be 0 (docs/conventions.md).
 struct Camera {
     glm::vec3 eye{0.0f, 0.0f, 5.0f};
     glm::vec3 target{0.0f, 0.0f, 0.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
-    float fov_y_degrees = 45.0f;  // full vertical field of view
+    float fov_y_degrees = 45.0f;  // perspective: full vertical field of view
     float near = 0.1f;
     float far = 100.0f;
+    Projection projection = Projection::perspective;
+    float ortho_height = 2.0f;    // orthographic: the view volume's height in world units (width: height * aspect)
 };
 
 // The camera with a look-at step's eye, target and up: the step places an object as that camera's inverse view.

@@ -39,9 +39,24 @@ bool fits_float(double value) { return std::isfinite(static_cast<float>(value));
 // Empty when every term is a finite float. The scene checks only that the numbers fit; the matrix itself is built
 // in raster/transform, which the scene does not see.
 std::string projection_problem(const Camera& camera, int width, int height) {
-    const double focal = 1.0 / std::tan(static_cast<double>(camera.fov_y_degrees) * (M_PI / 360.0));
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     char text[64];
+    if (camera.projection == Projection::orthographic) {
+        // Its scale terms 2 / (height aspect) and 2 / height, and depth terms 1 / (f - n) and f / (f - n).
+        const double scale = 2.0 / static_cast<double>(camera.ortho_height);
+        if (!fits_float(scale) || !fits_float(scale / aspect)) {
+            std::snprintf(text, sizeof text, "%g", double(camera.ortho_height));
+            return std::string("orthographic camera height ") + text + " is too small: its projection overflows float";
+        }
+        const double n = camera.near, f = camera.far;
+        if (!fits_float(1.0 / (f - n)) || !fits_float(f / (f - n))) {
+            std::snprintf(text, sizeof text, "%.9g and %.9g", n, f);
+            return std::string("camera near and far (") + text +
+                   ") are too close for their size: the projection's depth terms overflow float";
+        }
+        return "";
+    }
+    const double focal = 1.0 / std::tan(static_cast<double>(camera.fov_y_degrees) * (M_PI / 360.0));
     if (!fits_float(focal) || !fits_float(focal / aspect)) {
         std::snprintf(text, sizeof text, "%g", double(camera.fov_y_degrees));
         return std::string("camera field of view ") + text + " degrees is too narrow: its projection overflows float";
@@ -91,10 +106,14 @@ std::optional<CameraProblem> camera_problem(const Camera& c) {
     if (!finite3(c.eye) || !finite3(c.target) || !finite3(c.up))
         return CameraProblem{!finite3(c.eye) ? CameraField::eye : !finite3(c.target) ? CameraField::target : CameraField::up,
                              "camera eye, target and up must be finite"};
-    if (!(c.near > 0.0f) || !std::isfinite(c.near))
+    const bool orthographic = c.projection == Projection::orthographic;
+    // An orthographic camera's w is 1 and its near plane a plane of z: near may be 0.
+    if (orthographic && !(c.near >= 0.0f && std::isfinite(c.near)))
+        return CameraProblem{CameraField::near, "orthographic camera near must be >= 0, got " + std::to_string(c.near)};
+    if (!orthographic && (!(c.near > 0.0f) || !std::isfinite(c.near)))
         return CameraProblem{CameraField::near, "camera near must be > 0, got " + std::to_string(c.near)};
     // Setup stores 1 / w in float, and w goes down to near: a subnormal near would make it infinite.
-    if (c.near < std::numeric_limits<float>::min()) {
+    if (!orthographic && c.near < std::numeric_limits<float>::min()) {
         char near[32];
         std::snprintf(near, sizeof near, "%g", double(c.near));
         return CameraProblem{CameraField::near,
@@ -111,7 +130,10 @@ std::optional<CameraProblem> camera_problem(const Camera& c) {
         return CameraProblem{CameraField::far, std::string("camera far must be at most 8.50706e+37 (1 / far a normal "
                                                            "float), got ") + far};
     }
-    if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
+    if (orthographic && !(c.ortho_height > 0.0f && std::isfinite(c.ortho_height)))
+        return CameraProblem{CameraField::ortho_height,
+                             "orthographic camera height must be finite and > 0, got " + std::to_string(c.ortho_height)};
+    if (!orthographic && !(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
         return CameraProblem{CameraField::fov,
                              "camera field of view must be in (0, 180) degrees, got " + std::to_string(c.fov_y_degrees)};
     const glm::vec3 view = c.target - c.eye;

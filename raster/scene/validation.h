@@ -32,7 +32,7 @@ std::string settings_problem(const RenderSettings& settings);
 std::string shadow_settings_problem(const ShadowSettings& settings);
 
 // The camera check: which value is wrong and what is wrong with it, so a loader can point at that value.
-enum class CameraField { eye, target, up, fov, near, far };
+enum class CameraField { eye, target, up, fov, near, far, ortho_height };
 struct CameraProblem {
     CameraField field;
     std::string message;  // "camera near must be > 0, got -1.000000"

@@ -25,7 +25,7 @@ void BlinnPhongShading::light_batch(const uint32_t* triangle, const glm::vec3* b
             }
         }
     }
-    orient_points(batch, count, scene.camera.eye);
+    orient_points(batch, count, viewer_of(scene.camera));
     thread_local std::vector<float> visibility;
     const bool shadowed = surface_.shadowed();
     if (shadowed) {

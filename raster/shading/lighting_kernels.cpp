@@ -48,11 +48,16 @@ inline Vec3 unit_or_zero(const Vec3& v) {
             hn::IfThenElseZero(positive, hn::Div(v.z, length))};
 }
 
-void OrientPoints(LightingBatch& batch, size_t count, const glm::vec3& eye) {
+void OrientPoints(LightingBatch& batch, size_t count, const Viewer& viewer) {
     const D d;
+    const glm::vec3& eye = viewer.eye;
     const V eye_x = hn::Set(d, eye.x), eye_y = hn::Set(d, eye.y), eye_z = hn::Set(d, eye.z);
     for (size_t i = 0; i < count; i += hn::Lanes(d)) {
         store3(unit_or_zero(load3(batch.normal, i)), batch.normal, i);
+        if (viewer.parallel) {
+            store3(Vec3{hn::Set(d, viewer.back.x), hn::Set(d, viewer.back.y), hn::Set(d, viewer.back.z)}, batch.to_eye, i);
+            continue;
+        }
         const Vec3 position = load3(batch.position, i);
         const Vec3 to_eye{hn::Sub(eye_x, position.x), hn::Sub(eye_y, position.y), hn::Sub(eye_z, position.z)};
         store3(unit_or_zero(to_eye), batch.to_eye, i);
@@ -153,8 +158,8 @@ namespace raster {
 HWY_EXPORT(OrientPoints);
 HWY_EXPORT(LightPoints);
 
-void orient_points(LightingBatch& batch, size_t count, const glm::vec3& eye) {
-    HWY_DYNAMIC_DISPATCH(OrientPoints)(batch, count, eye);
+void orient_points(LightingBatch& batch, size_t count, const Viewer& viewer) {
+    HWY_DYNAMIC_DISPATCH(OrientPoints)(batch, count, viewer);
 }
 
 void light_points(LightingBatch& batch, size_t first, size_t count, const Material& material,

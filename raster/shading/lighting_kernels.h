@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "raster/scene/scene.h"
+#include "raster/shading/viewer.h"
 
 namespace raster {
 
@@ -30,9 +31,9 @@ struct LightingBatch {
     alignas(64) float specular[3][kRow] = {};
 };
 
-// For points [0, count): normal becomes unit length (a zero normal stays zero) and to_eye the unit vector from
-// position to `eye` (zero when they coincide).
-void orient_points(LightingBatch& batch, size_t count, const glm::vec3& eye);
+// For points [0, count): normal becomes unit length (a zero normal stays zero) and to_eye the unit view vector
+// (viewer.h): from position to the eye (zero when they coincide), or the parallel viewer's back direction.
+void orient_points(LightingBatch& batch, size_t count, const Viewer& viewer);
 
 // For points [first, first + count), all of one material: ambient plus, per light, one-sided Lambert diffuse and
 // the specular lobe (Blinn: n.h, h the normalised l + v; Phong: r.v, r = 2 (n.l) n - l) raised to the material's

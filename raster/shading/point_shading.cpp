@@ -2,6 +2,7 @@
 #include "raster/shading/point_shading.h"
 
 #include "raster/shading/stylized_lighting.h"
+#include "raster/shading/viewer.h"
 
 namespace raster {
 
@@ -21,7 +22,7 @@ LightingTerms StylizedShading::light_at(uint32_t triangle, const glm::vec3& bary
     glm::vec3 position, normal;
     SurfaceLookup::surface_at(surface_.corners(triangle), bary, position, normal);
     const Scene& scene = surface_.scene();
-    const glm::vec3 unit_normal = unit_or_zero(normal), to_eye = unit_or_zero(scene.camera.eye - position);
+    const glm::vec3 unit_normal = unit_or_zero(normal), to_eye = to_viewer(viewer_of(scene.camera), position);
     const RenderSettings& settings = scene.settings;
     if (cel_)
         return evaluate_cel_lighting(position, unit_normal, to_eye, surface_.material(triangle), scene.lights,

@@ -1,6 +1,8 @@
 // Prelit lighting: Blinn-Phong terms per face or vertex, shadowed lights apart, and their combination per sample.
 #include "raster/shading/prelit_lighting.h"
 
+#include "raster/shading/viewer.h"
+
 namespace raster {
 
 PrelitLighting::PrelitLighting(const SurfaceLookup& surface) : surface_(surface) {
@@ -10,7 +12,7 @@ PrelitLighting::PrelitLighting(const SurfaceLookup& surface) : surface_(surface)
 void PrelitLighting::light(const glm::vec3& position, const glm::vec3& normal, const Material& material,
                            LightingTerms* out) const {
     const Scene& scene = surface_.scene();
-    const glm::vec3 to_eye = unit_or_zero(scene.camera.eye - position);
+    const glm::vec3 to_eye = to_viewer(viewer_of(scene.camera), position);
     if (stride_ == 1) {
         out[0] = evaluate_lighting(position, normal, to_eye, material, scene.lights, scene.settings.ambient_light,
                                    SpecularModel::blinn, nullptr);

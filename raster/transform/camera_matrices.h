@@ -11,7 +11,7 @@ namespace raster {
 glm::mat4 view_matrix(const Camera& camera);
 
 // View to clip space for an image of width x height pixels (aspect = width / height), reversed-Z
-// (perspective_matrix; conventions.h).
+// (perspective_matrix or orthographic_matrix by the camera's projection; conventions.h).
 glm::mat4 projection_matrix(const Camera& camera, int width, int height);
 
 }  // namespace raster

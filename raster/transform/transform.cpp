@@ -101,6 +101,19 @@ glm::mat4 perspective_matrix(float fov_y_degrees, float aspect, float near, floa
     return m;
 }
 
+glm::mat4 orthographic_matrix(float height, float aspect, float near, float far) {
+    // Reversed-Z: z_clip = A * z_view + B with w_clip = 1; d(near) = 1 and d(far) = 0 (z_view = -near, -far)
+    // give A = 1 / (far - near) and B = far / (far - near).
+    const double h = height, n = near, f = far;
+    glm::mat4 m(0.0f);
+    m[0][0] = float(2.0 / (h * double(aspect)));
+    m[1][1] = float(2.0 / h);
+    m[2][2] = float(1.0 / (f - n));
+    m[3][2] = float(f / (f - n));
+    m[3][3] = 1.0f;
+    return m;
+}
+
 glm::mat4 viewport_matrix(int width, int height) {
     glm::mat4 m(1.0f);
     m[0][0] = 0.5f * float(width);

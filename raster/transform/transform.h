@@ -26,6 +26,10 @@ glm::mat4 look_at_model_matrix(const glm::vec3& eye, const glm::vec3& target, co
 // gets z/w = 1, at `far` z/w = 0. fov_y is the full vertical field of view in degrees; aspect = width / height.
 glm::mat4 perspective_matrix(float fov_y_degrees, float aspect, float near, float far);
 
+// Orthographic projection with reversed-Z depth and w = 1: a view volume `height` high and height * aspect wide
+// maps to x, y in [-1, 1]; a point at view depth `near` gets z = 1, at `far` z = 0.
+glm::mat4 orthographic_matrix(float height, float aspect, float near, float far);
+
 // Maps NDC x, y in [-1, 1] (y up) to screen pixels (y down): (-1, 1) -> (0, 0), (1, -1) -> (width, height).
 // Depth passes through unchanged.
 glm::mat4 viewport_matrix(int width, int height);

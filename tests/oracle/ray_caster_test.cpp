@@ -166,6 +166,28 @@ TEST(Oracle, theFarPlaneIsAPlaneToo) {
     }
 }
 
+TEST(Oracle, anOrthographicCameraCastsParallelRaysFromThePlaneThroughTheEye) {
+    // A 4-unit-high view on 64 x 64 pixels: a 2 x 2 square covers the middle 32 x 32 pixels at any depth, and its
+    // view depth is its distance from the plane through the eye (near 0).
+    for (const float z : {-0.5f, -3.0f, -9.0f}) {
+        const std::vector<testing::Triangle> square = {{{{-1, -1, z}, {1, -1, z}, {1, 1, z}}}, {{{-1, -1, z}, {1, 1, z}, {-1, 1, z}}}};
+        Camera camera = camera_at_origin(90.0f, 0.0f, 10.0f);
+        camera.projection = Projection::orthographic;
+        camera.ortho_height = 4.0f;
+        const Scene scene = scene_with_triangles(square, camera, 64, 64);
+        const SampleBuffer buffer = oracle_buffer(scene);
+        EXPECT_EQ(covered(buffer), 32u * 32u) << z;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const size_t at = buffer.index(x, y, 0);
+                EXPECT_EQ(buffer.triangle[at] != kNoTriangle, x >= 16 && x < 48 && y >= 16 && y < 48) << x << ", " << y;
+                if (buffer.triangle[at] != kNoTriangle) {
+                    EXPECT_NEAR(buffer.view_depth[at], -z, 1e-6f);
+                }
+            }
+    }
+}
+
 TEST(Oracle, backFacesAreLeftOutOnlyWhenTheSceneCulls) {
     const testing::Triangle counter_clockwise = {{{-1, -1, -3}, {1, -1, -3}, {0, 1, -3}}};
     const testing::Triangle clockwise = {{{-1, -1, -3}, {0, 1, -3}, {1, -1, -3}}};

@@ -101,6 +101,15 @@ const std::vector<Rejection> kRejections = {
     {"upAlongTheViewDirection", with_triangle("camera:\n  eye: [0, 5, 0]\n  up: [0, 1, 0]\n"), 3, 7, "parallel"},
     {"upAgainstTheViewDirection", with_triangle("camera:\n  eye: [0, 5, 0]\n  up: [0, -2, 0]\n"), 3, 7, "parallel"},
     {"upZero", with_triangle("camera:\n  eye: [0, 0, 5]\n  up: [0, 0, 0]\n"), 3, 7, "up"},
+    // Orthographic cameras: a height, not a field of view; near may be 0 but not less.
+    {"projectionUnknown", with_triangle("camera:\n  projection: isometric\n"), 2, 15, "perspective or orthographic"},
+    {"fieldOfViewOnAnOrthographicCamera", with_triangle("camera:\n  projection: orthographic\n  fov: 30\n"), 3, 8,
+     "takes height"},
+    {"heightOnAPerspectiveCamera", with_triangle("camera:\n  height: 4\n"), 2, 11, "orthographic"},
+    {"orthographicHeightZero", with_triangle("camera:\n  projection: orthographic\n  height: 0\n"), 3, 11,
+     "height must be finite and > 0"},
+    {"orthographicNearNegative", with_triangle("camera:\n  projection: orthographic\n  near: -1\n"), 3, 9,
+     "near must be >= 0"},
     // Column 20 of "    faces: [[0, 1, 3]]" is the 3.
     {"faceIndexPastTheLastVertex",
      "meshes:\n  - vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n    faces: [[0, 1, 3]]\n", 3, 20, "0..2", {"3"}},

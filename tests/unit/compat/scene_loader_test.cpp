@@ -84,6 +84,19 @@ TEST(SceneLoader, appliesDocumentedDefaults) {
     EXPECT_FLOAT_EQ(mesh.material.exponent, 32.0f);
 }
 
+TEST(SceneLoader, readsAnOrthographicCameraWithNearAtZero) {
+    const Scene scene = parse_scene(std::string("camera: {projection: orthographic, height: 6, near: 0, far: 20}\n"
+                                                "meshes:\n") + kTriangle,
+                                    "scene.yaml");
+    EXPECT_EQ(scene.camera.projection, raster::Projection::orthographic);
+    EXPECT_FLOAT_EQ(scene.camera.ortho_height, 6.0f);
+    EXPECT_FLOAT_EQ(scene.camera.near, 0.0f);
+    EXPECT_FLOAT_EQ(scene.camera.far, 20.0f);
+    // Perspective is the default.
+    EXPECT_EQ(parse_scene(std::string("meshes:\n") + kTriangle, "scene.yaml").camera.projection,
+              raster::Projection::perspective);
+}
+
 TEST(SceneLoader, noLightsByDefault) {
     const Scene scene = parse_scene(std::string("meshes:\n") + kTriangle, "scene.yaml");
     EXPECT_TRUE(scene.lights.empty());

@@ -112,5 +112,26 @@ TEST(Clip, vertexExactlyOnTheNearPlaneIsKept) {
     EXPECT_FALSE(polygon.clipped);
 }
 
+
+// An orthographic frame (w = 1, reversed-Z depth in z): near and far are the planes z = w and z = 0, whatever the
+// camera's near and far distances, and w stays 1 (never pinned to a near distance above 1).
+TEST(Clip, orthographicNearAndFarArePlanesOfZAndWStaysOne) {
+    const ClipVolume volume{4.0f, 9.0f, 1.0, true};
+    const glm::vec4 original[3] = {{0.0f, 0.0f, 1.5f, 1.0f}, {0.5f, 0.0f, 0.5f, 1.0f}, {0.0f, 0.5f, -0.5f, 1.0f}};
+    const ClippedPolygon polygon = clip_triangle(original[0], original[1], original[2], volume);
+    ASSERT_EQ(polygon.count, 5);  // both planes cut a corner off
+    for (int i = 0; i < polygon.count; ++i) {
+        const glm::vec4& p = polygon.vertices[i].position;
+        EXPECT_EQ(p.w, 1.0f);
+        EXPECT_LE(p.z, 1.0f + 1e-6f);
+        EXPECT_GE(p.z, -1e-6f);
+    }
+    expect_barycentrics_reproduce(polygon, original);
+    // Entirely inside: untouched, though w = 1 is below the near distance 4.
+    EXPECT_TRUE(inside_clip_volume({0.2f, 0.1f, 0.5f, 1.0f}, volume));
+    EXPECT_FALSE(inside_clip_volume({0.2f, 0.1f, 1.25f, 1.0f}, volume));
+    EXPECT_FALSE(inside_clip_volume({0.2f, 0.1f, -0.25f, 1.0f}, volume));
+}
+
 }  // namespace
 }  // namespace raster

@@ -122,6 +122,29 @@ TEST(GltfScene, theCameraLooksDownItsNodesMinusZFromItsOrigin) {
     EXPECT_EQ(scene.settings.width, 960);  // 480 high at the camera's aspect ratio of 2
 }
 
+TEST(GltfScene, anOrthographicCameraKeepsItsMagnificationsAndPlanes) {
+    GltfBuilder b = GltfBuilder::one_triangle();
+    b.document["cameras"] = {{{"type", "orthographic"},
+                              {"orthographic", {{"xmag", 3.0}, {"ymag", 1.5}, {"znear", 0.0}, {"zfar", 12}}}}};
+    b.node({{"camera", 0}, {"translation", {0, 0, 10}}});
+    GltfSceneParts parts;
+    const Scene scene = read_built(b, &parts);
+    EXPECT_TRUE(parts.camera);
+    EXPECT_EQ(scene.camera.projection, Projection::orthographic);
+    expect_near(scene.camera.eye, {0, 0, 10});
+    expect_near(glm::normalize(scene.camera.target - scene.camera.eye), {0, 0, -1});
+    EXPECT_FLOAT_EQ(scene.camera.ortho_height, 3.0f);  // ymag is half the view's height
+    EXPECT_FLOAT_EQ(scene.camera.near, 0.0f);
+    EXPECT_FLOAT_EQ(scene.camera.far, 12.0f);
+    EXPECT_EQ(scene.settings.width, 960);  // 480 high, at xmag / ymag = 2
+
+    b.document["cameras"][0]["orthographic"]["ymag"] = 0;
+    EXPECT_NE(read_error(b).find("/cameras/0/orthographic/ymag: must be > 0"), std::string::npos) << read_error(b);
+    b.document["cameras"][0]["orthographic"]["ymag"] = 1;
+    b.document["cameras"][0]["orthographic"]["zfar"] = 0;
+    EXPECT_NE(read_error(b).find("/cameras/0/orthographic/zfar: must be > znear"), std::string::npos) << read_error(b);
+}
+
 TEST(GltfScene, primitivesWithoutATriangleAreNothingToDraw) {
     GltfBuilder b;
     b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", b.positions({0, 0, 0, 1, 0, 0})}}}})}});

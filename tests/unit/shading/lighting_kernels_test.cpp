@@ -60,7 +60,7 @@ Case random_case(uint32_t seed, float exponent) {
 // The kernels over the case in the runs [0, 7), [7, 40), [40, 64), so runs start off vector boundaries.
 LightingBatch lit(const Case& c, SpecularModel model, bool with_visibility) {
     LightingBatch batch = c.batch;
-    orient_points(batch, kLightingBatch, glm::vec3(0.5f, 4.0f, 6.0f));
+    orient_points(batch, kLightingBatch, Viewer{glm::vec3(0.5f, 4.0f, 6.0f)});
     const size_t cuts[] = {0, 7, 40, kLightingBatch};
     for (int r = 0; r < 3; ++r)
         light_points(batch, cuts[r], cuts[r + 1] - cuts[r], c.material, c.lights, glm::vec3(0.3f), model,

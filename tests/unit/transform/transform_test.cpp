@@ -86,6 +86,23 @@ TEST(Transform, reversedZKeepsExtremeRangesOrdered) {
     }
 }
 
+TEST(Transform, orthographicMapsItsBoxToTheCubeWithWOne) {
+    // 4 high, aspect 2 (8 wide), near 1, far 5: (4, -2, -1) is the near plane's lower right corner.
+    const glm::mat4 m = orthographic_matrix(4.0f, 2.0f, 1.0f, 5.0f);
+    const glm::vec4 corner = m * glm::vec4(4.0f, -2.0f, -1.0f, 1.0f);
+    EXPECT_FLOAT_EQ(corner.x, 1.0f);
+    EXPECT_FLOAT_EQ(corner.y, -1.0f);
+    EXPECT_FLOAT_EQ(corner.z, 1.0f);  // reversed-Z: 1 at near
+    EXPECT_EQ(corner.w, 1.0f);
+    const glm::vec4 far = m * glm::vec4(-2.0f, 1.0f, -5.0f, 1.0f);
+    EXPECT_FLOAT_EQ(far.x, -0.5f);
+    EXPECT_FLOAT_EQ(far.y, 0.5f);
+    EXPECT_NEAR(far.z, 0.0f, 1e-7f);  // 0 at far
+    EXPECT_EQ(far.w, 1.0f);
+    // Depth is linear in view depth: halfway from near to far is 0.5.
+    EXPECT_FLOAT_EQ((m * glm::vec4(0.0f, 0.0f, -3.0f, 1.0f)).z, 0.5f);
+}
+
 TEST(Transform, viewportMapsNdcCornersToScreenCorners) {
     const glm::mat4 v = viewport_matrix(640, 480);
     expect_near(apply(v, {-1, 1, 0}), {0, 0, 0});
