@@ -42,7 +42,7 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
     command.add_option("--hierarchical-z", flags.hierarchical_z,
                        "Hierarchical-Z occlusion culling: on (default) or off; never changes a pixel")
         ->check(CLI::IsMember({"on", "off"}));
-    command.add_flag("--shadows", flags.shadows, "Every light casts shadows (through a cube shadow map)");
+    command.add_flag("--shadows", flags.shadows, "Every point and spot light casts shadows (through a cube shadow map; directional lights cast none)");
     command.add_option("--shadow-resolution", flags.shadow_resolution,
                        "Shadow map texels per side of each cube face, 16..8192 (default 1024)")
         ->check(CLI::Range(kMinShadowResolution, kMaxShadowResolution));
@@ -98,8 +98,8 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     if (flags.depth_format) parse_depth_format(*flags.depth_format, settings.modes.depth);
     if (flags.clipping) parse_clipping(*flags.clipping, settings.modes.clipping);
     if (flags.hierarchical_z) settings.modes.hierarchical_z = *flags.hierarchical_z == "on";
-    if (flags.shadows)
-        for (Light& light : scene.lights) light.shadows = true;
+    if (flags.shadows)  // a directional light has no position to centre a cube shadow map on
+        for (Light& light : scene.lights) light.shadows = light.type != LightType::directional;
     if (flags.shadow_resolution) settings.shadows.resolution = *flags.shadow_resolution;
     if (flags.shadow_bias) settings.shadows.bias = *flags.shadow_bias;
     if (flags.shadow_slope_bias) settings.shadows.slope_bias = *flags.shadow_slope_bias;

@@ -156,7 +156,7 @@ LlvmpipePeer::LlvmpipePeer(const raster::Scene& scene, int threads) : impl_(std:
     if (scene.lights.size() > kMaxLights)
         throw std::runtime_error("llvmpipe peer: at most " + std::to_string(kMaxLights) + " lights");
     for (const raster::SceneMesh& mesh : scene.meshes)
-        if (!mesh.data.colors.empty() || !mesh.data.face_colors.empty())
+        if (!mesh.data->colors.empty() || !mesh.data->face_colors.empty())
             throw std::runtime_error("llvmpipe peer: vertex and face colours are not implemented");
 
     p.width = settings.width;

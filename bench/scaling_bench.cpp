@@ -54,7 +54,7 @@ raster::Scene sphere_scene(int triangles, int size) {
     scene.camera.far = 10.0f;
     scene.lights = {{{4, 5, 4}, {1, 1, 1}, 0.9f, false, false}, {{-5, 1, 3}, {0.5f, 0.6f, 0.9f}, 0.4f, false, false}};
     raster::SceneMesh mesh;
-    mesh.data = uv_sphere(stacks, 2 * stacks);
+    mesh.data = raster::shared_mesh_data(uv_sphere(stacks, 2 * stacks));
     mesh.material.color = glm::vec3(0.3f, 0.55f, 0.8f);
     mesh.material.exponent = 60.0f;
     mesh.source = "generated sphere";

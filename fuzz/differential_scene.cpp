@@ -69,7 +69,7 @@ constexpr ModeVariant kModeVariants[] = {
 // Up to kMaxExtremeVertices vertices replaced by positions from raw float bits or the table of extremes, and the
 // whole scene (eye, target, vertices, lights) moved by an offset drawn the same way; false when nothing was drawn.
 bool draw_extremes(FuzzedDataProvider& input, Scene& scene) {
-    std::vector<glm::vec3>& positions = scene.meshes.front().data.positions;
+    std::vector<glm::vec3>& positions = mutable_data(scene.meshes.front()).positions;
     const int vertices = input.ConsumeIntegralInRange(0, kMaxExtremeVertices);
     for (int i = 0; i < vertices; ++i)
         positions[input.ConsumeIntegralInRange<size_t>(0, positions.size() - 1)] =
@@ -96,6 +96,18 @@ void draw_orthographic(FuzzedDataProvider& input, Scene& scene) {
     camera.ortho_height = drawn > 0.0f ? drawn : static_cast<float>(framing);
     if (input.ConsumeBool()) camera.near = 0.0f;
     camera.projection = Projection::orthographic;
+}
+
+// Directional and spot lights in place of the drawn point lights: each light's type, direction and cone drawn.
+void draw_light_types(FuzzedDataProvider& input, Scene& scene) {
+    for (Light& light : scene.lights) {
+        constexpr LightType kTypes[] = {LightType::point, LightType::directional, LightType::spot};
+        light.type = input.PickValueInArray(kTypes);
+        light.direction = fuzzed_finite_vec3(input, -1.0f, 1.0f, false);
+        light.outer_cone = input.ConsumeFloatingPointInRange(0.05f, 1.5707963f);
+        light.inner_cone = input.ConsumeFloatingPointInRange(0.0f, light.outer_cone * 0.99f);
+        if (light.type == LightType::directional) light.attenuate = false;
+    }
 }
 
 // Every triangle's radius is under kMaxExtremeRadius (the oracle's own reference geometry, as it compares with).
@@ -129,6 +141,7 @@ std::optional<DifferentialCase> differential_case(const uint8_t* data, size_t si
     result.extreme = draw_extremes(input, scene);
     // Drawn after everything else, so that the inputs saved before orthographic cameras existed keep their scenes.
     if (input.ConsumeBool()) draw_orthographic(input, scene);
+    if (input.ConsumeBool()) draw_light_types(input, scene);
     const RenderSettings& settings = scene.settings;
     if (uint64_t(settings.width) * uint64_t(settings.height) * uint64_t(settings.samples) > kMaxFrameSamples)
         return std::nullopt;

@@ -68,9 +68,9 @@ SceneMesh fuzzed_triangles(FuzzedDataProvider& input, const FuzzedSceneLimits& l
     const int count = input.ConsumeIntegralInRange(1, limits.max_triangles);
     for (int t = 0; t < count; ++t) {
         for (int corner = 0; corner < 3; ++corner)
-            mesh.data.positions.push_back(fuzzed_finite_vec3(input, -10.0f, 10.0f, limits.extreme_coordinates));
+            mutable_data(mesh).positions.push_back(fuzzed_finite_vec3(input, -10.0f, 10.0f, limits.extreme_coordinates));
         const auto first = static_cast<uint32_t>(3 * t);
-        mesh.data.triangles.push_back({{first, first + 1, first + 2}});
+        mutable_data(mesh).triangles.push_back({{first, first + 1, first + 2}});
     }
     return mesh;
 }
@@ -146,12 +146,20 @@ std::string describe_scene(const Scene& scene) {
         std::snprintf(line, sizeof line, " fov %a near %a far %a\n", double(c.fov_y_degrees), double(c.near),
                       double(c.far));
     text += line;
-    for (const Light& light : scene.lights) text += "  light at " + vec(light.position) + "\n";
+    for (const Light& light : scene.lights) {
+        if (light.type != LightType::directional) text += "  light at " + vec(light.position);
+        if (light.type != LightType::point) text += "  light along " + vec(light.direction);
+        if (light.type == LightType::spot) {
+            std::snprintf(line, sizeof line, " cone %a to %a", double(light.inner_cone), double(light.outer_cone));
+            text += line;
+        }
+        text += "\n";
+    }
     for (const SceneMesh& mesh : scene.meshes) {
         text += "  mesh '" + mesh.source + "':\n";
-        for (const TriangleIndices& t : mesh.data.triangles)
-            text += "    " + vec(mesh.data.positions[t.v[0]]) + " " + vec(mesh.data.positions[t.v[1]]) + " " +
-                    vec(mesh.data.positions[t.v[2]]) + "\n";
+        for (const TriangleIndices& t : mesh.data->triangles)
+            text += "    " + vec(mesh.data->positions[t.v[0]]) + " " + vec(mesh.data->positions[t.v[1]]) + " " +
+                    vec(mesh.data->positions[t.v[2]]) + "\n";
     }
     return text;
 }

@@ -68,15 +68,15 @@ bool fuzzed_fan(FuzzedDataProvider& input, const Camera& camera, const RenderSet
     const double start = input.ConsumeFloatingPointInRange(0.0, 2.0 * std::numbers::pi);
 
     fan.source = "fuzzed fan";
-    fan.data.positions.push_back(glm::vec3(centre));
+    mutable_data(fan).positions.push_back(glm::vec3(centre));
     for (int i = 0; i < rim; ++i) {
         const double angle = start + 2.0 * std::numbers::pi * (i + input.ConsumeFloatingPointInRange(0.0, 0.4)) / rim;
         const double length = radius * input.ConsumeFloatingPointInRange(0.3, 1.0);
-        fan.data.positions.push_back(
+        mutable_data(fan).positions.push_back(
             glm::vec3(centre + length * (std::cos(angle) * axis_a + std::sin(angle) * axis_b)));
-        fan.data.triangles.push_back({{0, uint32_t(1 + i), uint32_t(1 + (i + 1) % rim)}});
+        mutable_data(fan).triangles.push_back({{0, uint32_t(1 + i), uint32_t(1 + (i + 1) % rim)}});
     }
-    return std::all_of(fan.data.positions.begin(), fan.data.positions.end(),
+    return std::all_of(fan.data->positions.begin(), fan.data->positions.end(),
                        [](const glm::vec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); });
 }
 
@@ -86,14 +86,14 @@ SceneMesh fuzzed_copies(FuzzedDataProvider& input, const Scene& scene) {
     copies.source = "fuzzed copies";
     std::vector<const glm::vec3*> corners;
     for (const SceneMesh& mesh : scene.meshes)
-        for (const TriangleIndices& t : mesh.data.triangles)
-            for (uint32_t v : t.v) corners.push_back(&mesh.data.positions[v]);
+        for (const TriangleIndices& t : mesh.data->triangles)
+            for (uint32_t v : t.v) corners.push_back(&mesh.data->positions[v]);
     const int count = corners.empty() ? 0 : input.ConsumeIntegralInRange(0, kMaxCopies);
     for (int c = 0; c < count; ++c) {
         const size_t first = 3 * input.ConsumeIntegralInRange<size_t>(0, corners.size() / 3 - 1);
-        const auto at = static_cast<uint32_t>(copies.data.positions.size());
-        for (size_t k = 0; k < 3; ++k) copies.data.positions.push_back(*corners[first + k]);
-        copies.data.triangles.push_back({{at, at + 1, at + 2}});
+        const auto at = static_cast<uint32_t>(copies.data->positions.size());
+        for (size_t k = 0; k < 3; ++k) mutable_data(copies).positions.push_back(*corners[first + k]);
+        mutable_data(copies).triangles.push_back({{at, at + 1, at + 2}});
     }
     return copies;
 }
@@ -149,7 +149,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (fan_made) scene.meshes.push_back(std::move(fan));
     const size_t fan_end = triangle_count(scene);
     SceneMesh copies = fuzzed_copies(input, scene);
-    if (!copies.data.triangles.empty()) scene.meshes.push_back(std::move(copies));
+    if (!copies.data->triangles.empty()) scene.meshes.push_back(std::move(copies));
     try {
         validate_scene(scene);
     } catch (const InputError&) {

@@ -38,16 +38,16 @@ Scene looking_down_negative_z(float fov, float near, float far, int samples) {
 
 SceneMesh triangle_mesh(const std::array<glm::vec3, 3>& t) {
     SceneMesh mesh;
-    mesh.data.positions = {t[0], t[1], t[2]};
-    mesh.data.triangles = {{{0, 1, 2}}};
+    mutable_data(mesh).positions = {t[0], t[1], t[2]};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}};
     return mesh;
 }
 
 // A quad at view depth w, twice as wide as a 90-degree view there.
 SceneMesh quad_at(float w) {
     SceneMesh mesh;
-    mesh.data.positions = {{-2 * w, -2 * w, -w}, {2 * w, -2 * w, -w}, {2 * w, 2 * w, -w}, {-2 * w, 2 * w, -w}};
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    mutable_data(mesh).positions = {{-2 * w, -2 * w, -w}, {2 * w, -2 * w, -w}, {2 * w, 2 * w, -w}, {-2 * w, 2 * w, -w}};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     return mesh;
 }
 

@@ -176,9 +176,9 @@ RASTER_PROPERTY(Projection, mapsTheFrustumEdgesToTheImageBorder) {
     SceneMesh mesh;
     const double corners[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
     for (const auto& k : corners)
-        mesh.data.positions.push_back({static_cast<float>(k[0] * t * half * aspect), static_cast<float>(k[1] * t * half),
+        mutable_data(mesh).positions.push_back({static_cast<float>(k[0] * t * half * aspect), static_cast<float>(k[1] * t * half),
                                        static_cast<float>(-t)});
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     scene.meshes.push_back(mesh);
     const TransformedScene out = impl.stages.vertex(scene, vertex_stage_needs(ShadingMode::unlit));
     const double bound = std::ldexp(1.0, -21);
@@ -279,9 +279,9 @@ RASTER_PROPERTY(NormalMatrix, keepsNormalsPerpendicularToSurfaces) {
     Scene scene;
     scene.settings.shading = ShadingMode::blinn_phong;
     SceneMesh mesh;
-    mesh.data.positions = {c.triangle[0], c.triangle[1], c.triangle[2]};
-    mesh.data.normals = {normal, normal, normal};
-    mesh.data.triangles = {{{0, 1, 2}}};
+    mutable_data(mesh).positions = {c.triangle[0], c.triangle[1], c.triangle[2]};
+    mutable_data(mesh).normals = {normal, normal, normal};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}};
     mesh.transform.steps = {MatrixStep{m}};
     scene.meshes.push_back(mesh);
     const TransformedScene out = impl.stages.vertex(scene, vertex_stage_needs(ShadingMode::blinn_phong));

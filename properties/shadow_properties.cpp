@@ -40,8 +40,8 @@ ShadowCase shadow_case() {
                           static_cast<float>(signed_unit() * 4.0));
     scene.lights.push_back({light, glm::vec3(1.0f), 1.0f, false, true});
     SceneMesh floor;
-    floor.data.positions = {{-20, 0, -20}, {-20, 0, 20}, {20, 0, 20}, {20, 0, -20}};
-    floor.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    mutable_data(floor).positions = {{-20, 0, -20}, {-20, 0, 20}, {20, 0, 20}, {20, 0, -20}};
+    mutable_data(floor).triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     floor.source = "floor";
     scene.meshes.push_back(floor);
     const int count = *rc::gen::inRange(1, 5);
@@ -53,10 +53,10 @@ ShadowCase shadow_case() {
         const double size = log_uniform(0.1, 1.0) * light.y;
         for (int k = 0; k < 3; ++k) {
             corners[k] = centre + size * glm::dvec3(signed_unit(), signed_unit() * 0.5, signed_unit());
-            occluder.data.positions.push_back(glm::vec3(corners[k]));
-            corners[k] = glm::dvec3(occluder.data.positions.back());  // what raster draws
+            mutable_data(occluder).positions.push_back(glm::vec3(corners[k]));
+            corners[k] = glm::dvec3(occluder.data->positions.back());  // what raster draws
         }
-        occluder.data.triangles = {{{0, 1, 2}}};
+        mutable_data(occluder).triangles = {{{0, 1, 2}}};
         occluder.source = "occluder";
         scene.meshes.push_back(occluder);
         c.occluders.push_back(corners);

@@ -52,12 +52,12 @@ Scene floor_scene(float half, float z0, float z1, float scale, const TextureBind
     scene.camera.near = 0.05f;
     scene.camera.far = 1000.0f;
     SceneMesh mesh;
-    mesh.data.positions = {{-half, 0, z0}, {half, 0, z0}, {half, 0, z1}, {-half, 0, z1}};
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    mutable_data(mesh).positions = {{-half, 0, z0}, {half, 0, z0}, {half, 0, z1}, {-half, 0, z1}};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     auto uv = [&](const glm::vec3& p) { return glm::vec2(p.x / scale, -p.z / scale); };
-    for (const TriangleIndices& t : mesh.data.triangles)
-        mesh.data.corner_uvs.push_back({{uv(mesh.data.positions[t.v[0]]), uv(mesh.data.positions[t.v[1]]),
-                                         uv(mesh.data.positions[t.v[2]])}});
+    for (const TriangleIndices& t : mesh.data->triangles)
+        mutable_data(mesh).corner_uvs.push_back({{uv(mutable_data(mesh).positions[t.v[0]]), uv(mutable_data(mesh).positions[t.v[1]]),
+                                         uv(mesh.data->positions[t.v[2]])}});
     mesh.material.color = glm::vec3(1.0f);
     mesh.material.texture = binding;
     scene.meshes.push_back(std::move(mesh));

@@ -37,8 +37,8 @@ Scene pane_scene(const std::vector<PaneSpec>& panes, const std::vector<size_t>& 
         const PaneSpec& p = panes[i];
         SceneMesh mesh;
         const float z = static_cast<float>(5.0 - p.depth), h = static_cast<float>(p.half);
-        mesh.data.positions = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
-        mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+        mutable_data(mesh).positions = {{-h, -h, z}, {h, -h, z}, {h, h, z}, {-h, h, z}};
+        mutable_data(mesh).triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
         mesh.material.color = glm::vec3(p.colour);
         mesh.material.opacity = static_cast<float>(p.opacity);
         mesh.source = "pane " + std::to_string(i);

@@ -137,7 +137,7 @@ ClipBound original_clip_vertex(const Scene& scene, const OracleScene& geometry, 
     const ModelMatrixError& model = geometry.models[triangle.mesh];
     const glm::dmat4 magnitude_chain =
         absolute(projection) * absolute(geometry.camera.view) * raster_model_magnitude(model);
-    const glm::vec3& position = scene.meshes[triangle.mesh].data.positions[vertex - geometry.mesh_first_vertex[triangle.mesh]];
+    const glm::vec3& position = scene.meshes[triangle.mesh].data->positions[vertex - geometry.mesh_first_vertex[triangle.mesh]];
     ClipBound bound;
     bound.clip = projection * glm::dvec4(geometry.view[vertex], 1.0);
     bound.magnitudes = magnitude_chain * glm::abs(glm::dvec4(glm::dvec3(position), 1.0));
@@ -180,7 +180,7 @@ ReferenceGeometry::ReferenceGeometry(const Scene& scene, const OracleScene& geom
     for (uint32_t id = 0; id < triangle_count; ++id) {
         const OracleTriangle& triangle = geometry.triangles[id];
         const glm::dmat4 view_magnitude_chain = view_magnitude * absolute(geometry.models[triangle.mesh].exact);
-        const auto& positions = scene.meshes[triangle.mesh].data.positions;
+        const auto& positions = scene.meshes[triangle.mesh].data->positions;
         const uint32_t first_vertex = geometry.mesh_first_vertex[triangle.mesh];
         std::vector<ClipVertex> polygon(3);
         glm::dvec3 view_vertex[3], oracle_error[3];

@@ -22,7 +22,7 @@ bool needs_normals(ShadingMode mode) {
 
 // The vertex normals of one mesh and raster's error bounds for them.
 void mesh_normals(const SceneMesh& mesh, const ModelMatrixError& model, uint32_t first, OracleScene& out) {
-    const MeshData& data = mesh.data;
+    const MeshData& data = *mesh.data;
     const size_t count = data.positions.size();
     if (data.normals.size() == count) {
         const glm::dmat3 to_world = glm::transpose(glm::inverse(glm::dmat3(model.exact)));
@@ -71,14 +71,14 @@ OracleScene view_of_scene(const Scene& scene, const Camera& camera, int width, i
         const uint32_t first = static_cast<uint32_t>(out.world.size());
         out.mesh_first_vertex.push_back(first);
         const ModelMatrixError& model = out.models.emplace_back(raster_model_error(mesh.transform));
-        for (const glm::vec3& p : mesh.data.positions) {
+        for (const glm::vec3& p : mesh.data->positions) {
             const glm::dvec3 world(model.exact * glm::dvec4(glm::dvec3(p), 1.0));
             out.world.push_back(world);
             out.view.push_back(view_of_world(out.camera, world));
             if (world_errors) out.world_error.push_back(raster_world_position_error(model, p));
         }
-        for (uint32_t t = 0; t < mesh.data.triangles.size(); ++t) {
-            const auto& v = mesh.data.triangles[t].v;
+        for (uint32_t t = 0; t < mesh.data->triangles.size(); ++t) {
+            const auto& v = mesh.data->triangles[t].v;
             out.triangles.push_back({m, t, {first + v[0], first + v[1], first + v[2]}});
         }
     }

@@ -5,6 +5,8 @@
 #include "oracle/reference/precision.h"
 #include "oracle/reference/shading_precision.h"
 
+#include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace raster::oracle {
@@ -30,6 +32,34 @@ Interval3 multiply_add(const Interval3& a, const Interval3& b, const Interval3& 
 // raster's float normalisation of every vector in the box: its roundings per component (shading_precision.h).
 Interval3 float_unit(const Interval3& difference) {
     return unit(difference).widened(float_gamma(kDirectionRoundings));
+}
+
+// The unit vector towards a light from the points of the box, as raster forms it in float (docs/scene-format.md
+// "Lights"): along -direction for a directional light (normalised once), from the point to the light's position
+// otherwise; and the squared distance (1 for a directional light, which is never attenuated).
+struct TowardsLight {
+    Interval3 to_light;
+    Interval distance_squared{1.0};
+};
+TowardsLight towards_light(const Light& light, const Interval3& position) {
+    if (light.type == LightType::directional) return {float_unit(Interval3(-glm::dvec3(light.direction))), Interval(1.0)};
+    const Interval3 offset = after_roundings(Interval3(glm::dvec3(light.position)) - position, kDifferenceRoundings);
+    return {float_unit(offset), float_dot(offset, offset)};
+}
+
+// A spot light's fade at the points whose unit vector to the light is in `to_light` (KHR_lights_punctual, as
+// docs/scene-format.md "Lights" writes it): its constants in double, each rounded to float once, as the convention
+// says; then cd = -dot(unit axis, to_light), f = clamp(cd scale + offset, 0, 1) (2 roundings) and f^2 (1).
+Interval spot_fade(const Light& light, const Interval3& to_light) {
+    const double inner = std::cos(static_cast<double>(light.inner_cone)), outer = std::cos(static_cast<double>(light.outer_cone));
+    const double exact_scale = 1.0 / std::max(0.001, inner - outer);
+    const double scale = static_cast<float>(exact_scale), offset = static_cast<float>(-outer * exact_scale);
+    const Interval cd = -float_dot(float_unit(Interval3(glm::dvec3(light.direction))), to_light);
+    const Interval raw = cd * Interval(scale) + Interval(offset);
+    const Interval linear =
+        raw.widened(float_gamma(2) * (cd.magnitude() * std::fabs(scale) + std::fabs(offset)));
+    const Interval f(std::clamp(linear.lo, 0.0, 1.0), std::clamp(linear.hi, 0.0, 1.0));
+    return after_roundings(square(f), 1);
 }
 
 // The sum of Ls visibility-scaled terms onto the first: a product and a sum each (flat, Gouraud).
@@ -104,7 +134,7 @@ OracleShader::OracleShader(const Scene& scene, const OracleScene& geometry, cons
             vertex_terms_.resize(geometry.world.size() * stride);
             for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
                 const uint32_t first = geometry.mesh_first_vertex[m];
-                for (uint32_t i = 0; i < scene.meshes[m].data.positions.size(); ++i)
+                for (uint32_t i = 0; i < scene.meshes[m].data->positions.size(); ++i)
                     lit_terms(position_box(first + i), normal_box(first + i), scene.meshes[m].material,
                               &vertex_terms_[(first + i) * stride]);
             }
@@ -220,7 +250,7 @@ Interval3 OracleShader::position_at(uint32_t id, const Interval3& bary) const {
 
 Interval3 OracleShader::base_color(uint32_t id, const Interval3& bary) const {
     const OracleTriangle& t = geometry_.triangles[id];
-    const MeshData& mesh = scene_.meshes[t.mesh].data;
+    const MeshData& mesh = *scene_.meshes[t.mesh].data;
     if (!mesh.face_colors.empty()) return colour(mesh.face_colors[t.local]);
     if (!mesh.colors.empty()) {
         const auto& v = mesh.triangles[t.local].v;
@@ -249,10 +279,8 @@ OracleShader::LitTerms OracleShader::light(const Interval3& position, const Inte
         kDifferenceRoundings));
     for (size_t index : lights) {
         const Light& light = scene_.lights[index];
-        const Interval3 offset = after_roundings(Interval3(glm::dvec3(light.position)) - position, kDifferenceRoundings);
-        const Interval distance_squared = float_dot(offset, offset);
+        const auto [to_light, distance_squared] = towards_light(light, position);
         if (!(distance_squared.hi > 0.0)) continue;  // a light at the point: skipped, as raster skips it
-        const Interval3 to_light = float_unit(offset);
         const Interval n_dot_l = float_dot(normal, to_light);
         if (!(n_dot_l.hi > 0.0)) continue;  // one-sided: behind the surface everywhere in the box
         // Only a light that may reach the point asks for its visibility; raster skips a light in full shadow.
@@ -262,7 +290,9 @@ OracleShader::LitTerms OracleShader::light(const Interval3& position, const Inte
         // Where n.l (or r^2) may be on either side of 0, the light may or may not count.
         const Interval counts = n_dot_l.lo > 0.0 && distance_squared.lo > 0.0 ? Interval(1.0) : Interval(0.0, 1.0);
         Interval3 radiance = after_roundings(Interval(light.intensity) * colour(light.color), kRadianceRoundings);
-        if (light.attenuate) radiance = after_roundings((Interval(1.0) / distance_squared) * radiance, 1);
+        if (light.type == LightType::spot) radiance = after_roundings(spot_fade(light, to_light) * radiance, 1);
+        if (light.attenuate && light.type != LightType::directional)
+            radiance = after_roundings((Interval(1.0) / distance_squared) * radiance, 1);
         Interval lobe;
         if (phong) {
             const Interval3 scaled = after_roundings(Interval(2.0) * n_dot_l * normal, 1);
@@ -320,14 +350,12 @@ OracleShader::LitTerms OracleShader::gooch(const Interval3& position, const Inte
     LitTerms terms;
     terms.specular = Interval3(glm::dvec3(0.0));
     if (!scene_.lights.empty()) {
-        const Interval3 offset =
-            after_roundings(Interval3(glm::dvec3(scene_.lights[0].position)) - position, kDifferenceRoundings);
+        const auto [to_light, distance_squared] = towards_light(scene_.lights[0], position);
         const Interval visible = visibility ? visibility->at(0) : Interval(1.0);
-        const Interval tilt = after_roundings(
-            Interval(0.5) * (Interval(1.0) + float_dot(normal, float_unit(offset))) * visible,
-            kGoochTiltRoundings + (visible.lo == 1.0 ? 0 : 1));
+        const Interval tilt = after_roundings(Interval(0.5) * (Interval(1.0) + float_dot(normal, to_light)) * visible,
+                                              kGoochTiltRoundings + (visible.lo == 1.0 ? 0 : 1));
         // A light at the point leaves t at 1/2.
-        t = float_dot(offset, offset).lo > 0.0 ? tilt : hull(tilt, Interval(0.5));
+        t = distance_squared.lo > 0.0 ? tilt : hull(tilt, Interval(0.5));
         terms.specular = light(position, normal, material, Model::blinn, first_light_, false, visibility).specular;
     }
     const Interval blend = after_roundings(Interval(tones.alpha) + t * Interval(double(tones.beta) - tones.alpha),

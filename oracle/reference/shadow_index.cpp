@@ -30,7 +30,7 @@ uint64_t position_key(const glm::vec3& p) {
 std::vector<uint32_t> welded_vertices(const Scene& scene, const OracleScene& geometry) {
     std::vector<uint32_t> canonical(geometry.world.size());
     for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
-        const auto& positions = scene.meshes[m].data.positions;
+        const auto& positions = scene.meshes[m].data->positions;
         const uint32_t first = geometry.mesh_first_vertex[m];
         std::unordered_multimap<uint64_t, uint32_t> seen;
         for (uint32_t i = 0; i < positions.size(); ++i) {

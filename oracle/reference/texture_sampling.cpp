@@ -50,13 +50,13 @@ OracleTextureSampling::OracleTextureSampling(const Scene& scene, const OracleSce
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
         const OracleTriangle& t = geometry.triangles[id];
         const SceneMesh& mesh = scene.meshes[t.mesh];
-        if (!triangle_material(scene, t).texture || mesh.data.corner_uvs.empty()) continue;
+        if (!triangle_material(scene, t).texture || mesh.data->corner_uvs.empty()) continue;
         Triangle& out = triangles_[id];
         out.error.width = scene.settings.width;
         out.error.height = scene.settings.height;
         for (int k = 0; k < 3; ++k) {
             out.view[k] = geometry.view[t.vertex[k]];
-            out.uv[k] = glm::dvec2(mesh.data.corner_uvs[t.local].uv[k]);
+            out.uv[k] = glm::dvec2(mesh.data->corner_uvs[t.local].uv[k]);
             const ClipBound bound = original_clip_vertex(scene, geometry, id, k);
             out.error.clip[k] = bound.clip;
             out.error.clip_error[k] = bound.error;

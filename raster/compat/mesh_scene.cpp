@@ -80,8 +80,8 @@ void read_mesh_file_scene(MeshData data, const std::filesystem::path& path, cons
     scene.path = path.string();
     SceneMesh mesh;
     mesh.source = path.filename().string();
-    mesh.data = std::move(data);
-    if (mesh.data.triangles.empty()) throw InputError(scene.path, 0, 0, "the mesh has no triangles to render");
+    mesh.data = shared_mesh_data(std::move(data));
+    if (mesh.data->triangles.empty()) throw InputError(scene.path, 0, 0, "the mesh has no triangles to render");
     files.obj_materials(Node::undefined(), mesh.source, mesh, std::nullopt);
     scene.meshes.push_back(std::move(mesh));
     frame_scene(scene, true, true);

@@ -356,7 +356,8 @@ void read_seed000_scene(const Node& root, const DocumentReader& reader, const Se
     if (config.task == Seed000Task::transform_test || config.obj.empty()) return;  // nothing to draw
 
     const Node& obj_node = reader.required(root, "obj");
-    const MeshData& mesh = load_mesh(obj_node, config.obj.string());
+    const std::shared_ptr<const MeshData> loaded = load_mesh(obj_node, config.obj.string());
+    const MeshData& mesh = *loaded;
     Material material;  // the document's objects are white: colour 1, lit only by `ambient` and the lights
     material.color = glm::vec3(1.0f);
     if (config.task == Seed000Task::shading) {
@@ -376,9 +377,10 @@ void read_seed000_scene(const Node& root, const DocumentReader& reader, const Se
     }
     if (config.task == Seed000Task::triangle) {
         SceneMesh whole;
-        whole.data = mesh;
-        whole.data.colors.clear();
-        whole.data.face_colors.clear();
+        MeshData uncoloured = mesh;
+        uncoloured.colors.clear();
+        uncoloured.face_colors.clear();
+        whole.data = shared_mesh_data(std::move(uncoloured));
         whole.source = config.obj.string();
         whole.material = material;
         set_canvas_transform(config.width, config.height, scene, whole.transform);
@@ -394,7 +396,7 @@ void read_seed000_scene(const Node& root, const DocumentReader& reader, const Se
                      config.transforms.size() == 1 ? "y" : "ies");
     for (size_t k = 0; k < objects; ++k) {
         SceneMesh object;
-        object.data = object_mesh(mesh, k);
+        object.data = shared_mesh_data(object_mesh(mesh, k));
         object.source = config.obj.string() + " object " + std::to_string(k);
         object.material = material;
         if (k < config.transforms.size()) {

@@ -54,9 +54,10 @@ Scene seed001_triangle_scene(const Seed001Triangle& triangle) {
     set_seed001_camera(triangle.s, triangle.z_near, scene);
     SceneMesh mesh;
     mesh.source = "-p0 -p1 -p2";
-    mesh.data.positions.assign(triangle.vertices.begin(), triangle.vertices.end());
-    mesh.data.triangles.push_back({{0, 1, 2}});
-    mesh.data.face_colors.push_back(triangle.color);
+    MeshData& data = mutable_data(mesh);
+    data.positions.assign(triangle.vertices.begin(), triangle.vertices.end());
+    data.triangles.push_back({{0, 1, 2}});
+    data.face_colors.push_back(triangle.color);
     scene.meshes.push_back(std::move(mesh));
     return scene;
 }
@@ -207,7 +208,7 @@ void read_seed001_scene(const Node& root, const DocumentReader& reader, const Me
             mesh.data = load_mesh(filename, mesh.source);
         } else {
             mesh.source = reader.file() + ":" + std::to_string(node.line()) + " (inline object)";
-            mesh.data = read_inline_object(node, reader);
+            mesh.data = shared_mesh_data(read_inline_object(node, reader));
         }
         if (const Node& transform = reader.optional(node, "transform"); transform.is_defined())
             mesh.transform.steps = read_seed001_transform(transform, reader);

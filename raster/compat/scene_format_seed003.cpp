@@ -59,7 +59,7 @@ void read_seed003_scene(const Node& root, const DocumentReader& reader, const Sc
         const Node& obj = reader.required(node, "obj");
         mesh.source = reader.string(obj, "obj");
         mesh.data = files.mesh(obj, mesh.source);
-        mesh.data.normals.clear();  // the document: vertex normals are the average of the adjacent face normals
+        if (!mesh.data->normals.empty()) mutable_data(mesh).normals.clear();  // the document: vertex normals are the average of the adjacent face normals
         mesh.material.color = glm::vec3(1.0f);
         mesh.material.ambient = reader.vec3(reader.required(node, "ambient"), "ambient");
         mesh.material.diffuse = reader.vec3(reader.required(node, "diffuse"), "diffuse");

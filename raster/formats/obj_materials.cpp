@@ -74,11 +74,11 @@ std::filesystem::path file_beside(const std::filesystem::path& folder, const std
 
 void apply_obj_materials(SceneMesh& mesh, const std::filesystem::path& obj_path, const MaterialSources& sources,
                          const std::optional<Material>& coefficients) {
-    const std::vector<MaterialRun>& runs = mesh.data.material_runs;
+    const std::vector<MaterialRun>& runs = mesh.data->material_runs;
     if (runs.empty()) return;
     // The first library to define a name wins.
     std::map<std::string, FoundMaterial> by_name;
-    for (const MaterialLibrary& library : mesh.data.material_libraries) {
+    for (const MaterialLibrary& library : mesh.data->material_libraries) {
         const std::filesystem::path path = file_beside(obj_path.parent_path(), library.file);
         const std::vector<MtlMaterial>* materials = nullptr;
         try {

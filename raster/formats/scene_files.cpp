@@ -2,6 +2,8 @@
 #include "raster/formats/scene_files.h"
 
 #include <cstdio>
+#include <map>
+#include <memory>
 
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
@@ -21,18 +23,18 @@ std::filesystem::path SceneFiles::resolve(const std::string& file) const {
     return path.lexically_normal();
 }
 
-const MeshData& SceneFiles::mesh(const Node& where, const std::string& file) {
+std::shared_ptr<const MeshData> SceneFiles::mesh(const Node& where, const std::string& file) {
     const std::filesystem::path path = resolve(file);
     auto& slot = meshes_[path.string()];
     if (!slot) {
         try {
-            slot = std::make_unique<MeshData>(load_mesh_file(path));
+            slot = shared_mesh_data(load_mesh_file(path));
         } catch (const InputError& error) {
             // Say where the scene asked for the mesh, and what is wrong inside it.
             reader_.fail(where, "in mesh '" + file + "': " + error.what());
         }
     }
-    return *slot;
+    return slot;
 }
 
 const std::vector<MtlMaterial>& SceneFiles::library(const std::filesystem::path& path) {
@@ -50,7 +52,7 @@ std::shared_ptr<const Texture> SceneFiles::texture(const std::filesystem::path& 
 
 SceneFileLoaders SceneFiles::loaders() {
     SceneFileLoaders files;
-    files.mesh = [this](const Node& where, const std::string& file) -> const MeshData& { return mesh(where, file); };
+    files.mesh = [this](const Node& where, const std::string& file) { return mesh(where, file); };
     files.obj_materials = [this](const Node& where, const std::string& file, SceneMesh& target,
                                  const std::optional<Material>& coefficients) {
         MaterialSources sources;
@@ -75,13 +77,35 @@ SceneFileLoaders SceneFiles::loaders() {
     return files;
 }
 
+namespace {
+
+// Whether any material of the mesh is textured.
+bool reads_texture(const SceneMesh& mesh) {
+    bool textured = false;
+    for_each_material(mesh, [&](const Material& m) { textured = textured || m.texture.has_value(); });
+    return textured;
+}
+
+}  // namespace
+
 void finish_scene_textures(Scene& scene) {
+    // Texture coordinates that no placement of a mesh's data reads are dropped, once for all its placements.
+    std::map<const MeshData*, bool> read;
+    for (const SceneMesh& mesh : scene.meshes) read[mesh.data.get()] = read[mesh.data.get()] || reads_texture(mesh);
+    std::map<const MeshData*, std::shared_ptr<const MeshData>> without_uvs;
     for (SceneMesh& mesh : scene.meshes) {
-        bool textured = false;
-        for_each_material(mesh, [&](const Material& m) { textured = textured || m.texture.has_value(); });
-        if (!textured) {
-            mesh.data.corner_uvs = {};
-        } else if (mesh.data.corner_uvs.empty()) {
+        const MeshData* data = mesh.data.get();
+        if (read[data] || data->corner_uvs.empty()) continue;
+        std::shared_ptr<const MeshData>& replacement = without_uvs[data];
+        if (!replacement) {
+            MeshData copy = *data;
+            copy.corner_uvs = {};
+            replacement = shared_mesh_data(std::move(copy));
+        }
+        mesh.data = replacement;
+    }
+    for (SceneMesh& mesh : scene.meshes) {
+        if (reads_texture(mesh) && mesh.data->corner_uvs.empty()) {
             std::fprintf(stderr, "%s: warning: mesh '%s' has a textured material but no texture coordinates on every "
                                  "corner; it is drawn untextured\n", scene.path.c_str(), mesh.source.c_str());
             for_each_material(mesh, [](Material& m) { m.texture.reset(); });

@@ -26,14 +26,14 @@ public:
 
 private:
     std::filesystem::path resolve(const std::string& file) const;
-    const MeshData& mesh(const Node& where, const std::string& file);
+    std::shared_ptr<const MeshData> mesh(const Node& where, const std::string& file);
     const std::vector<MtlMaterial>& library(const std::filesystem::path& path);
     std::shared_ptr<const Texture> texture(const std::filesystem::path& path);
 
     std::filesystem::path folder_;
     const DocumentReader& reader_;
     bool strict_;
-    std::map<std::string, std::unique_ptr<MeshData>> meshes_;
+    std::map<std::string, std::shared_ptr<const MeshData>> meshes_;
     std::map<std::string, std::vector<MtlMaterial>> libraries_;
     std::map<std::string, std::shared_ptr<const Texture>> textures_;
 };

@@ -1,4 +1,6 @@
 // The project's own scene format (YAML; docs/scene-format.md): every field optional except what a scene needs.
+#include <cmath>
+
 #include <glm/geometric.hpp>
 
 #include "raster/scene/validation.h"
@@ -141,15 +143,39 @@ void check_settings(const Node& root, const DocumentReader& reader, const Render
 
 Light read_light(const Node& node, const DocumentReader& reader) {
     reader.expect_map(node, "a light");
-    reader.check_keys(node, {"position", "color", "intensity", "attenuation", "shadows"});
+    reader.check_keys(node, {"type", "position", "direction", "inner_cone", "outer_cone", "color", "intensity",
+                             "attenuation", "shadows"});
     Light light;
-    light.position = reader.vec3(reader.required(node, "position"), "light position");
+    const Node& type = reader.optional(node, "type");
+    if (type.is_defined()) {
+        const std::string kind = reader.string(type, "light type");
+        if (kind == "directional") light.type = LightType::directional;
+        else if (kind == "spot") light.type = LightType::spot;
+        else if (kind != "point") reader.fail(type, "light type must be point, directional or spot, got '" + kind + "'");
+    }
+    const Node &position = reader.optional(node, "position"), &direction = reader.optional(node, "direction");
+    // What each type is placed by: a point light its position, a directional one its direction, a spot light both.
+    if (light.type == LightType::directional && position.is_defined())
+        reader.fail(position, "a directional light has a direction, not a position");
+    if (light.type == LightType::point && direction.is_defined())
+        reader.fail(direction, "a point light has a position, not a direction (type: spot or directional has one)");
+    if (light.type != LightType::directional)
+        light.position = reader.vec3(reader.required(node, "position"), "light position");
+    if (light.type != LightType::point) light.direction = reader.vec3(reader.required(node, "direction"), "light direction");
+    for (const char* key : {"inner_cone", "outer_cone"}) {
+        const Node& v = reader.optional(node, key);
+        if (!v.is_defined()) continue;
+        if (light.type != LightType::spot) reader.fail(v, std::string(key) + " is a spot light's (type: spot)");
+        const float radians = static_cast<float>(reader.number(v, key) * (M_PI / 180.0));  // degrees in the file
+        (std::string(key) == "inner_cone" ? light.inner_cone : light.outer_cone) = radians;
+    }
     if (const Node& v = reader.optional(node, "color"); v.is_defined()) light.color = read_color(v, reader, "light color");
     if (const Node& v = reader.optional(node, "intensity"); v.is_defined())
         light.intensity = reader.finite_float(v, "light intensity");
     if (const Node& v = reader.optional(node, "attenuation"); v.is_defined())
         light.attenuate = reader.boolean(v, "light attenuation");
     if (const Node& v = reader.optional(node, "shadows"); v.is_defined()) light.shadows = reader.boolean(v, "light shadows");
+    if (const std::string problem = light_problem(light); !problem.empty()) reader.fail(node, problem);
     return light;
 }
 
@@ -277,7 +303,7 @@ SceneMesh read_raster_mesh(const Node& node, const DocumentReader& reader, const
         mesh.data = files.mesh(file, mesh.source);
     } else {
         mesh.source = reader.file() + ":" + std::to_string(node.line()) + " (inline mesh)";
-        mesh.data = read_inline_mesh(node, reader);
+        mesh.data = shared_mesh_data(read_inline_mesh(node, reader));
     }
     if (const Node& v = reader.optional(node, "transform"); v.is_defined()) mesh.transform.steps = read_transform_chain(v, reader);
     // The scene's material, when it gives one, is every triangle's; else an OBJ's own materials apply.

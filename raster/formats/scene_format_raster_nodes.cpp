@@ -88,7 +88,7 @@ private:
             reader_.fail(name_node, "no shape is named '" + name + "'" +
                                         (known.empty() ? std::string(" (the scene defines no shapes)") : " (shapes: " + known + ")"));
         }
-        placed_triangles_ += found->second.data.triangles.size();
+        placed_triangles_ += found->second.data->triangles.size();
         placed_steps_ += found->second.transform.steps.size() + chain.size();
         if (placed_steps_ > kMaxPlacedSteps)
             reader_.fail(name_node, "the nodes' chains hold more than " + std::to_string(kMaxPlacedSteps) + " steps in all");

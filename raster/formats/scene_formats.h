@@ -17,8 +17,9 @@
 
 namespace raster {
 
-// Resolves a mesh path from a scene relative to the scene file's folder and loads it (each file once per scene).
-using MeshFileLoader = std::function<const MeshData&(const Node& where, const std::string& path)>;
+// Resolves a mesh path from a scene relative to the scene file's folder and loads it (each file once per scene; the
+// meshes that name one file share its data).
+using MeshFileLoader = std::function<std::shared_ptr<const MeshData>(const Node& where, const std::string& path)>;
 
 // Sets a mesh's material and parts from the materials of the OBJ `file` it was read from (obj_materials.h).
 using ObjMaterialLoader = std::function<void(const Node& where, const std::string& file, SceneMesh& mesh,

@@ -50,8 +50,8 @@ TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& ne
 
     size_t vertex_total = 0, triangle_total = 0;
     for (const auto& mesh : scene.meshes) {
-        vertex_total += mesh.data.positions.size();
-        triangle_total += mesh.data.triangles.size();
+        vertex_total += mesh.data->positions.size();
+        triangle_total += mesh.data->triangles.size();
     }
     out.clip.reserve(vertex_total);
     out.triangles.reserve(triangle_total);
@@ -66,23 +66,23 @@ TransformedScene run_vertex_stage(const Scene& scene, const VertexStageNeeds& ne
         out.mesh_first_triangle.push_back(static_cast<uint32_t>(out.triangles.size()));
         const glm::mat4 model = model_matrix(mesh.transform);
         const glm::mat4 model_view_projection = view_projection * model;
-        for (const glm::vec3& p : mesh.data.positions) {
+        for (const glm::vec3& p : mesh.data->positions) {
             out.clip.push_back(model_view_projection * glm::vec4(p, 1.0f));
             if (needs.world_positions || needs.vertex_normals)
                 out.world_position.push_back(glm::vec3(model * glm::vec4(p, 1.0f)));
         }
-        for (const TriangleIndices& tri : mesh.data.triangles) {
+        for (const TriangleIndices& tri : mesh.data->triangles) {
             out.triangles.push_back({{first_vertex + tri.v[0], first_vertex + tri.v[1], first_vertex + tri.v[2]}});
             out.triangle_mesh.push_back(mesh_index);
         }
         if (!needs.vertex_normals) continue;
-        const auto vertex_count = static_cast<uint32_t>(mesh.data.positions.size());
-        if (mesh.data.normals.size() == mesh.data.positions.size()) {
+        const auto vertex_count = static_cast<uint32_t>(mesh.data->positions.size());
+        if (mesh.data->normals.size() == mesh.data->positions.size()) {
             const glm::mat3 to_world = normal_matrix(model);
             for (uint32_t i = 0; i < vertex_count; ++i)
-                out.world_normal[first_vertex + i] = unit_or_zero(to_world * mesh.data.normals[i]);
+                out.world_normal[first_vertex + i] = unit_or_zero(to_world * mesh.data->normals[i]);
         } else {
-            average_face_normals(out.world_position, mesh.data.triangles, first_vertex, vertex_count,
+            average_face_normals(out.world_position, mesh.data->triangles, first_vertex, vertex_count,
                                  out.world_normal);
         }
     }

@@ -40,6 +40,13 @@ TextureFilter filter_of(int min_filter, int mag_filter) {
 
 }  // namespace
 
+glm::dvec2 GltfUvTransform::apply(const glm::dvec2& uv) const {
+    const glm::dvec2 scaled = scale * uv;
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    // The extension's rotation matrix has columns (cos, sin) and (-sin, cos).
+    return offset + glm::dvec2(c * scaled.x - s * scaled.y, s * scaled.x + c * scaled.y);
+}
+
 float exponent_for_roughness(double roughness) {
     const double a = roughness * roughness;
     if (a * a < 2.0 / 4098.0) return 4096.0f;
@@ -49,7 +56,42 @@ float exponent_for_roughness(double roughness) {
 GltfMaterials::GltfMaterials(const tinygltf::Model& model, std::string file, GltfWarnings& warnings)
     : model_(model), file_(std::move(file)), warnings_(warnings) {}
 
-std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::TextureInfo& info, const std::string& at) {
+std::optional<GltfUvTransform> GltfMaterials::read_uv_transform(const tinygltf::Value& extension,
+                                                                const std::string& at) const {
+    auto fail = [&](const std::string& key, const std::string& message) {
+        throw InputError(file_, 0, 0, at + "/" + key + ": " + message);
+    };
+    auto number = [&](const tinygltf::Value& value, const std::string& key) {
+        if (!value.IsNumber()) fail(key, "must be a number");
+        const double n = value.GetNumberAsDouble();
+        if (!std::isfinite(n) || std::fabs(n) > 1e30) fail(key, "must be a finite number up to 1e30, got " + std::to_string(n));
+        return n;
+    };
+    auto pair = [&](const std::string& key, glm::dvec2& out) {
+        if (!extension.Has(key)) return;
+        const tinygltf::Value& value = extension.Get(key);
+        if (!value.IsArray() || value.ArrayLen() != 2) fail(key, "must be an array of 2 numbers");
+        out = {number(value.Get(0), key + "/0"), number(value.Get(1), key + "/1")};
+    };
+    if (!extension.IsObject()) throw InputError(file_, 0, 0, at + ": must be an object");
+    if (extension.Has("texCoord")) {
+        const tinygltf::Value& set = extension.Get("texCoord");
+        if (!set.IsInt() || set.GetNumberAsInt() < 0) fail("texCoord", "must be a texture coordinate set's number");
+        if (set.GetNumberAsInt() != 0) {
+            warnings_.say(at + "/texCoord: reads TEXCOORD_" + std::to_string(set.GetNumberAsInt()) +
+                          "; raster reads TEXCOORD_0 only, so the texture is left out");
+            return std::nullopt;
+        }
+    }
+    GltfUvTransform transform;
+    pair("offset", transform.offset);
+    pair("scale", transform.scale);
+    if (extension.Has("rotation")) transform.rotation = number(extension.Get("rotation"), "rotation");
+    return transform;
+}
+
+std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::TextureInfo& info, const std::string& at,
+                                                                std::optional<GltfUvTransform>& uv_transform) {
     if (info.index < 0) return std::nullopt;
     if (static_cast<size_t>(info.index) >= model_.textures.size())
         throw InputError(file_, 0, 0, at + "/index: there is no texture " + std::to_string(info.index));
@@ -57,8 +99,10 @@ std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::
         warnings_.say(at + ": reads TEXCOORD_" + std::to_string(info.texCoord) + "; raster reads TEXCOORD_0 only, so the texture is left out");
         return std::nullopt;
     }
-    if (info.extensions.count("KHR_texture_transform"))
-        warnings_.say(at + ": KHR_texture_transform is not read; the texture is applied untransformed");
+    if (const auto extension = info.extensions.find("KHR_texture_transform"); extension != info.extensions.end()) {
+        uv_transform = read_uv_transform(extension->second, at + "/extensions/KHR_texture_transform");
+        if (!uv_transform) return std::nullopt;
+    }
     const tinygltf::Texture& texture = model_.textures[static_cast<size_t>(info.index)];
     const std::string texture_at = "/textures/" + std::to_string(info.index);
     if (texture.source < 0) {
@@ -127,7 +171,7 @@ const GltfMaterial& GltfMaterials::at(int index, const std::string& use) {
     material.diffuse = glm::vec3(static_cast<float>(1.0 - metallic));
     material.specular = glm::vec3(static_cast<float>(0.04 * (1.0 - metallic))) + static_cast<float>(metallic) * out.color_factor;
     material.exponent = exponent_for_roughness(roughness);
-    material.texture = base_color_texture(pbr.baseColorTexture, pbr_at + "/baseColorTexture");
+    material.texture = base_color_texture(pbr.baseColorTexture, pbr_at + "/baseColorTexture", out.uv_transform);
     if (m.alphaMode == "BLEND") {
         material.opacity = static_cast<float>(alpha);
     } else if (m.alphaMode == "MASK") {

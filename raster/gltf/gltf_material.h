@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "raster/gltf/gltf_warnings.h"
@@ -15,6 +16,14 @@
 
 namespace raster {
 
+// KHR_texture_transform on a texture: uv' = T R S uv (the extension's offset, rotation in radians and scale), in
+// glTF's texture space, before raster turns v up.
+struct GltfUvTransform {
+    glm::dvec2 offset{0.0}, scale{1.0};
+    double rotation = 0.0;
+    glm::dvec2 apply(const glm::dvec2& uv) const;
+};
+
 struct GltfMaterial {
     Material material;
     // The base colour factor: it multiplies COLOR_0, which replaces a raster material's colour, so a primitive with
@@ -22,6 +31,8 @@ struct GltfMaterial {
     glm::vec3 color_factor{1.0f};
     // MASK with a base colour alpha below the cut-off: no texture alpha is read, so every triangle is cut away.
     bool cut_away = false;
+    // The base colour texture's KHR_texture_transform, applied to the primitives' texture coordinates as they are read.
+    std::optional<GltfUvTransform> uv_transform;
 };
 
 // The model's materials, each read once and each image decoded once.
@@ -34,7 +45,11 @@ public:
     const GltfMaterial& at(int index, const std::string& use);
 
 private:
-    std::optional<TextureBinding> base_color_texture(const tinygltf::TextureInfo& info, const std::string& at);
+    std::optional<TextureBinding> base_color_texture(const tinygltf::TextureInfo& info, const std::string& at,
+                                                     std::optional<GltfUvTransform>& uv_transform);
+    // The extension's transform; nothing when it names a texture coordinate set other than 0 (then the caller
+    // leaves the texture out, as for any other set).
+    std::optional<GltfUvTransform> read_uv_transform(const tinygltf::Value& extension, const std::string& at) const;
 
     const tinygltf::Model& model_;
     std::string file_;

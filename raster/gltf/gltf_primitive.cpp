@@ -1,6 +1,8 @@
 // One glTF primitive as raster's mesh data (gltf_primitive.h).
 #include "raster/gltf/gltf_primitive.h"
 
+#include <cmath>
+
 #include <glm/vec2.hpp>
 
 namespace raster {
@@ -111,9 +113,20 @@ std::optional<MeshData> read_gltf_primitive(const GltfAccessorReader& reader, co
         const std::vector<float> uvs =
             per_vertex("TEXCOORD_0", {TINYGLTF_TYPE_VEC2},
                        {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT}, components);
+        std::vector<glm::vec2> corners_of_vertex(vertex_count);
+        for (size_t i = 0; i < vertex_count; ++i) {
+            glm::dvec2 uv(uvs[2 * i], uvs[2 * i + 1]);
+            if (material.uv_transform) {
+                uv = material.uv_transform->apply(uv);  // in glTF's texture space, before v turns up
+                if (!std::isfinite(static_cast<float>(uv.x)) || !std::isfinite(static_cast<float>(uv.y)))
+                    reader.fail(attributes_at + "TEXCOORD_0", "texture coordinate " + std::to_string(i) +
+                                                                  " leaves float's range under KHR_texture_transform");
+            }
+            corners_of_vertex[i] = {static_cast<float>(uv.x), static_cast<float>(1.0 - uv.y)};
+        }
         for (const TriangleIndices& triangle : mesh.triangles) {
             TriangleUvs corners;
-            for (int k = 0; k < 3; ++k) corners.uv[k] = {uvs[2 * triangle.v[k]], 1.0f - uvs[2 * triangle.v[k] + 1]};
+            for (int k = 0; k < 3; ++k) corners.uv[k] = corners_of_vertex[triangle.v[k]];
             mesh.corner_uvs.push_back(corners);
         }
     }

@@ -18,6 +18,7 @@
 #include "raster/gltf/gltf_material.h"
 #include "raster/gltf/gltf_primitive.h"
 #include "raster/gltf/gltf_warnings.h"
+#include "raster/scene/validation.h"
 #include "raster/transform/model_matrix.h"
 #include "raster/transform/scene_bounds.h"
 #include "raster/transform/scene_pose.h"
@@ -29,7 +30,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kDefaultImageHeight = 480, kMaxImageSide = 16384;
 
 // Extensions a file may require and still be drawn as its author meant.
-bool understood(const std::string& extension) { return extension == "KHR_lights_punctual"; }
+bool understood(const std::string& extension) {
+    return extension == "KHR_lights_punctual" || extension == "KHR_texture_transform";
+}
 
 using Steps = std::vector<TransformStep>;
 
@@ -87,7 +90,8 @@ private:
     std::vector<int> animated_index_;  // per glTF node: its node in animation_.nodes, or -1 when not reached
     int current_animated_ = -1;        // the node being placed
     uint64_t placed_triangles_ = 0, read_triangles_ = 0, placed_steps_ = 0;
-    std::map<std::pair<int, int>, std::optional<MeshData>> primitives_;  // each read once, placed many times
+    // Each primitive read once (null: not drawn) and placed many times, its data shared by the placements.
+    std::map<std::pair<int, int>, std::shared_ptr<const MeshData>> primitives_;
 };
 
 std::vector<int> ModelReader::root_nodes() const {
@@ -155,8 +159,10 @@ void ModelReader::place_mesh(int mesh_index, const std::string& node_at, const S
         if (material.cut_away) continue;  // never read: nothing of it is drawn
         auto [slot, fresh] = primitives_.try_emplace({mesh_index, static_cast<int>(p)});
         if (fresh) {
-            slot->second = read_gltf_primitive(accessors_, primitive, at, material, warnings_);
-            if (!slot->second) warnings_.say(at + ": points and lines are not drawn");
+            if (std::optional<MeshData> read = read_gltf_primitive(accessors_, primitive, at, material, warnings_))
+                slot->second = shared_mesh_data(std::move(*read));
+            else
+                warnings_.say(at + ": points and lines are not drawn");
             read_triangles_ += slot->second ? slot->second->triangles.size() : 0;
             if (read_triangles_ > kMaxGltfPlacedTriangles)
                 fail(at, "the meshes hold more than " + std::to_string(kMaxGltfPlacedTriangles) + " triangles");
@@ -171,7 +177,7 @@ void ModelReader::place_mesh(int mesh_index, const std::string& node_at, const S
                                         " primitives, or chains of more than " + std::to_string(kMaxGltfPlacedSteps) +
                                         " steps in all");
         SceneMesh placed;
-        placed.data = *slot->second;
+        placed.data = slot->second;
         placed.transform.steps = steps;
         placed.material = material.material;
         placed.source = file_ + "#" + at;
@@ -228,16 +234,25 @@ void ModelReader::place_light(const tinygltf::Node& node, const std::string& nod
         fail(at, "there is no light " + std::to_string(light_index));
     const tinygltf::Light& light = model_.lights[static_cast<size_t>(light_index)];
     const std::string light_at = "/extensions/KHR_lights_punctual/lights/" + std::to_string(light_index);
-    if (light.type != "point") {
-        warnings_.say(light_at + ": " + light.type + " lights are not supported yet; only point lights light the scene");
-        return;
-    }
     Light out;
-    out.position = glm::vec3(compose_steps(steps)[3]);
+    if (light.type == "directional") out.type = LightType::directional;
+    else if (light.type == "spot") out.type = LightType::spot;
+    else if (light.type != "point") fail(light_at + "/type", "must be point, directional or spot, got '" + light.type + "'");
+    // At the node's origin, shining down its -z.
+    const glm::mat4 pose = compose_steps(steps);
+    out.position = glm::vec3(pose[3]);
+    out.direction = -glm::vec3(pose[2]);
+    if (out.type == LightType::spot) {
+        out.inner_cone = to_float(light.spot.innerConeAngle, light_at + "/spot/innerConeAngle");
+        out.outer_cone = to_float(light.spot.outerConeAngle, light_at + "/spot/outerConeAngle");
+    }
     if (!light.color.empty()) out.color = vec3_of(light.color, light_at + "/color");
     out.intensity = to_float(light.intensity, light_at + "/intensity");
     if (out.intensity < 0.0f) fail(light_at + "/intensity", "must be >= 0");
-    out.attenuate = true;  // candela: the inverse square law
+    // Point and spot: candela, by the inverse square law; directional: lux, never attenuated.
+    out.attenuate = out.type != LightType::directional;
+    if (light.range > 0.0) warnings_.say(light_at + "/range: not read; the light reaches every distance");
+    if (const std::string problem = light_problem(out); !problem.empty()) fail(light_at, problem);
     scene_.lights.push_back(out);
     animation_.light_nodes.push_back(current_animated_);
     parts_.lights = true;

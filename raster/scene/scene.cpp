@@ -2,7 +2,9 @@
 #include "raster/scene/scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <utility>
 
 namespace raster {
 
@@ -23,6 +25,21 @@ const char* to_string(ShadingMode mode) {
     for (const auto& entry : kShadingNames)
         if (entry.mode == mode) return entry.name;
     return "?";
+}
+
+std::shared_ptr<const MeshData> shared_mesh_data(MeshData data) { return std::make_shared<MeshData>(std::move(data)); }
+
+MeshData& mutable_data(SceneMesh& mesh) {
+    if (mesh.data.use_count() != 1) mesh.data = shared_mesh_data(*mesh.data);
+    // Every SceneMesh's data is made by shared_mesh_data as a (non-const) MeshData, so this const_cast is defined.
+    return const_cast<MeshData&>(*mesh.data);
+}
+
+SpotFade spot_fade(const Light& light) {
+    const double inner = std::cos(static_cast<double>(light.inner_cone));
+    const double outer = std::cos(static_cast<double>(light.outer_cone));
+    const double scale = 1.0 / std::max(0.001, inner - outer);
+    return {static_cast<float>(scale), static_cast<float>(-outer * scale)};
 }
 
 Camera look_at_camera(const LookAtStep& step) {
@@ -94,7 +111,7 @@ bool parse_transparency_mode(const std::string& name, TransparencyMode& out) {
 
 size_t triangle_count(const Scene& scene) {
     size_t total = 0;
-    for (const auto& mesh : scene.meshes) total += mesh.data.triangles.size();
+    for (const auto& mesh : scene.meshes) total += mesh.data->triangles.size();
     return total;
 }
 

@@ -55,24 +55,52 @@ struct Camera {
 // The camera with a look-at step's eye, target and up: the step places an object as that camera's inverse view.
 Camera look_at_camera(const LookAtStep& step);
 
-// Point light; colour is linear RGB. With `attenuate`, the light's contribution is divided by r^2. With `shadows`,
-// the light casts shadows through a cube shadow map (docs/shadows.md); without, it lights every point it faces.
+enum class LightType {
+    point,        // from `position` in every direction
+    directional,  // along `direction` everywhere, from infinitely far: no position, never attenuated
+    spot,         // a point light whose cone around `direction` fades from inner_cone to outer_cone
+};
+
+// A light; colour is linear RGB (docs/scene-format.md#lights). With `attenuate`, a point or spot light's
+// contribution is divided by r^2. With `shadows`, a point or spot light casts shadows through a cube shadow map
+// (docs/shadows.md); without, it lights every point it faces.
 struct Light {
-    glm::vec3 position{0.0f};
+    glm::vec3 position{0.0f};  // point and spot
     glm::vec3 color{1.0f};
     float intensity = 1.0f;
     bool attenuate = false;
     bool shadows = false;
+    LightType type = LightType::point;
+    glm::vec3 direction{0.0f, 0.0f, -1.0f};  // directional and spot: where the light travels (any length but 0)
+    float inner_cone = 0.0f;                 // spot: radians from the axis where the fade starts, [0, outer_cone)
+    float outer_cone = 0.7853982f;           // spot: radians from the axis where it ends, (inner_cone, pi/2]
 };
 
-// One mesh placed in the world: its data in object space, its model transform and its material.
+// A spot light's fade (KHR_lights_punctual): at angle a from the axis its light is scaled by
+// clamp(cos(a) * scale + offset, 0, 1)^2, with scale = 1 / max(0.001, cos(inner) - cos(outer)) and
+// offset = -cos(outer) * scale, each computed in double and rounded to float once.
+struct SpotFade {
+    float scale = 1.0f, offset = 0.0f;
+};
+SpotFade spot_fade(const Light& light);
+
+// Mesh data to share between placements. Always made here (a MeshData, const only through the pointer), so that
+// mutable_data may change data no other placement holds in place.
+std::shared_ptr<const MeshData> shared_mesh_data(MeshData data);
+
+// One mesh placed in the world: its data in object space, its model transform and its material. The data is shared
+// by every placement of one mesh (instancing: a glTF mesh under many nodes, a raster scene's shape placed by many
+// nodes), so a mesh placed a thousand times holds its vertices once.
 struct SceneMesh {
-    MeshData data;
+    std::shared_ptr<const MeshData> data = shared_mesh_data({});
     ModelTransform transform;  // the steps as the file gives them; raster and the oracle each compose them
     Material material;               // every triangle's, unless `parts` gives some another
     std::vector<MaterialPart> parts;  // OBJ usemtl: by increasing first_triangle; empty when one material
     std::string source;  // the file it came from, or "inline"
 };
+
+// The mesh data of `mesh` to change in place: its own, copied first when other placements share it.
+MeshData& mutable_data(SceneMesh& mesh);
 
 // The material of the mesh's local triangle `triangle`: its part's, or the mesh's.
 const Material& material_of(const SceneMesh& mesh, uint32_t triangle);

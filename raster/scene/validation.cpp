@@ -90,6 +90,25 @@ std::string settings_problem(const RenderSettings& s) {
     return shadow_settings_problem(s.shadows);
 }
 
+std::string light_problem(const Light& light) {
+    if (!finite3(light.position) || !finite3(light.color) || !std::isfinite(light.intensity))
+        return "light position, colour and intensity must be finite";
+    if (light.type == LightType::point) return "";
+    // Raster normalises the direction in float: its squared length must be a finite normal float.
+    const float length_squared = glm::dot(light.direction, light.direction);
+    if (!finite3(light.direction) || !(length_squared >= std::numeric_limits<float>::min()) || !std::isfinite(length_squared))
+        return "light direction must be finite, not zero, and its squared length a normal float";
+    if (light.type == LightType::directional && light.attenuate)
+        return "a directional light is never attenuated (it is infinitely far: no distance to divide by)";
+    if (light.type == LightType::directional && light.shadows)
+        return "a directional light casts no shadows (raster's shadow maps are cubes around a light's position)";
+    constexpr float kRightAngle = 1.5707964f;  // pi / 2 rounded up to float
+    if (light.type == LightType::spot &&
+        !(light.inner_cone >= 0.0f && light.inner_cone < light.outer_cone && light.outer_cone <= kRightAngle))
+        return "a spot light's cone angles must be 0 <= inner_cone < outer_cone <= 90 degrees";
+    return "";
+}
+
 std::string shadow_settings_problem(const ShadowSettings& s) {
     if (s.resolution < kMinShadowResolution || s.resolution > kMaxShadowResolution)
         return "shadow map resolution must be " + std::to_string(kMinShadowResolution) + ".." +
@@ -211,10 +230,9 @@ void validate_scene(const Scene& scene) {
              std::to_string(kMaxFrameBytes >> 20) + " MiB cap (lower the shadow map resolution)");
 
     for (const Light& light : scene.lights)
-        if (!finite3(light.position) || !finite3(light.color) || !std::isfinite(light.intensity))
-            fail("light position, colour and intensity must be finite");
+        if (std::string problem = light_problem(light); !problem.empty()) fail(problem);
     for (const SceneMesh& mesh : scene.meshes) {
-        const MeshData& m = mesh.data;
+        const MeshData& m = *mesh.data;
         for (const glm::vec3& p : m.positions)
             if (!finite3(p)) fail(mesh.source + ": vertex coordinates must be finite");
         for (size_t t = 0; t < m.triangles.size(); ++t)

@@ -28,6 +28,9 @@ void validate_scene(const Scene& scene);
 // what is wrong.
 std::string settings_problem(const RenderSettings& settings);
 
+// The light check (part of validate_scene): empty when fine, else what is wrong.
+std::string light_problem(const Light& light);
+
 // The shadow settings check (part of settings_problem): empty when fine, else what is wrong.
 std::string shadow_settings_problem(const ShadowSettings& settings);
 

@@ -21,7 +21,7 @@ GouraudShading::GouraudShading(const SurfaceLookup& surface) : surface_(surface)
         vertex_terms_.resize(geometry.clip.size() * stride);
         for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
             const uint32_t first = geometry.mesh_first_vertex[mesh];
-            const size_t count = scene.meshes[mesh].data.positions.size();
+            const size_t count = scene.meshes[mesh].data->positions.size();
             for (size_t i = first; i < first + count; ++i)
                 light_vertex(static_cast<uint32_t>(i), scene.meshes[mesh].material, &vertex_terms_[i * stride]);
         }

@@ -1,9 +1,12 @@
 // Lighting of one point: Blinn-Phong and Phong through the batch kernels, and the per-light parts the stylized modes use.
 #include "raster/shading/lighting.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
+
+#include "raster/core/unit_vector.h"
 
 namespace raster {
 
@@ -23,15 +26,29 @@ float specular_power(float base, float exponent) {
     return std::pow(base, exponent);
 }
 
+glm::vec3 directional_to_light(const Light& light) { return unit_or_zero(-light.direction); }
+
+float spot_factor(const Light& light, const glm::vec3& to_light) {
+    const SpotFade fade = spot_fade(light);
+    const float cd = -glm::dot(unit_or_zero(light.direction), to_light);
+    const float f = std::clamp(cd * fade.scale + fade.offset, 0.0f, 1.0f);
+    return f * f;
+}
+
 bool light_arrives(const Light& light, const glm::vec3& position, const glm::vec3& normal, LightArrival& out) {
-    glm::vec3 to_light = light.position - position;
-    const float distance_squared = glm::dot(to_light, to_light);
-    if (!(distance_squared > 0.0f)) return false;
-    to_light /= std::sqrt(distance_squared);
+    const bool directional = light.type == LightType::directional;
+    glm::vec3 to_light = directional ? directional_to_light(light) : light.position - position;
+    float distance_squared = 1.0f;
+    if (!directional) {
+        distance_squared = glm::dot(to_light, to_light);
+        if (!(distance_squared > 0.0f)) return false;
+        to_light /= std::sqrt(distance_squared);
+    }
     const float n_dot_l = glm::dot(normal, to_light);
     if (n_dot_l <= 0.0f) return false;
     glm::vec3 radiance = light.color * light.intensity;
-    if (light.attenuate) radiance /= distance_squared;
+    if (light.type == LightType::spot) radiance *= spot_factor(light, to_light);
+    if (light.attenuate && !directional) radiance /= distance_squared;
     out = {to_light, n_dot_l, radiance};
     return true;
 }

@@ -29,7 +29,15 @@ struct LightArrival {
     glm::vec3 radiance{0.0f};
 };
 // False when the light adds nothing: it sits on the point, or lies behind the surface (n.l <= 0; one-sided).
+// The radiance is colour x intensity, times a spot light's fade, divided by r^2 for an attenuated point or spot.
 bool light_arrives(const Light& light, const glm::vec3& position, const glm::vec3& normal, LightArrival& out);
+
+// The unit vector towards a directional light, normalize(-direction) in float (unit_or_zero).
+glm::vec3 directional_to_light(const Light& light);
+
+// A spot light's fade (scene.h SpotFade) for the unit vector `to_light` from the point to the light:
+// f^2 with f = clamp(cd * scale + offset, 0, 1) and cd = -dot(normalize(direction), to_light), in float.
+float spot_factor(const Light& light, const glm::vec3& to_light);
 
 // Blinn's lobe n.h, h the normalised half vector of the unit vectors to the light and to the eye (0 when they are
 // opposite).

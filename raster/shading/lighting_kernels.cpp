@@ -10,6 +10,8 @@
 #include <cmath>
 
 #include "raster/shading/lighting_kernels.h"
+#include "raster/core/unit_vector.h"
+#include "raster/shading/lighting.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace raster {
@@ -101,13 +103,30 @@ void LightPoints(LightingBatch& batch, size_t first, size_t count, const Materia
         for (size_t index = 0; index < lights.size(); ++index) {
             const Light& light = lights[index];
             const V visible = visibility ? hn::LoadU(d, visibility + index * LightingBatch::kRow + i) : hn::Set(d, 1.0f);
-            Vec3 to_light{hn::Sub(hn::Set(d, light.position.x), position.x),
-                          hn::Sub(hn::Set(d, light.position.y), position.y),
-                          hn::Sub(hn::Set(d, light.position.z), position.z)};
-            const V distance_squared = dot(to_light, to_light);
-            const V distance = hn::Sqrt(distance_squared);
-            to_light = {hn::Div(to_light.x, distance), hn::Div(to_light.y, distance), hn::Div(to_light.z, distance)};
+            const bool directional = light.type == LightType::directional;
+            Vec3 to_light;
+            V distance_squared = hn::Set(d, 1.0f);  // a directional light is never attenuated and never on the point
+            if (directional) {
+                const glm::vec3 unit = directional_to_light(light);
+                to_light = {hn::Set(d, unit.x), hn::Set(d, unit.y), hn::Set(d, unit.z)};
+            } else {
+                to_light = {hn::Sub(hn::Set(d, light.position.x), position.x),
+                            hn::Sub(hn::Set(d, light.position.y), position.y),
+                            hn::Sub(hn::Set(d, light.position.z), position.z)};
+                distance_squared = dot(to_light, to_light);
+                const V distance = hn::Sqrt(distance_squared);
+                to_light = {hn::Div(to_light.x, distance), hn::Div(to_light.y, distance), hn::Div(to_light.z, distance)};
+            }
             const V n_dot_l = dot(normal, to_light);
+            V fade = hn::Set(d, 1.0f);
+            if (light.type == LightType::spot) {  // lighting.h spot_factor, lane by lane
+                const SpotFade cone = spot_fade(light);
+                const glm::vec3 axis = raster::unit_or_zero(light.direction);
+                const V cd = hn::Neg(dot(Vec3{hn::Set(d, axis.x), hn::Set(d, axis.y), hn::Set(d, axis.z)}, to_light));
+                const V f = hn::Min(hn::Max(hn::Add(hn::Mul(cd, hn::Set(d, cone.scale)), hn::Set(d, cone.offset)), zero),
+                                    hn::Set(d, 1.0f));
+                fade = hn::Mul(f, f);
+            }
             // The light adds nothing where it sits on the point, lies behind the surface, or is in shadow.
             const auto arrives = hn::And(hn::And(hn::Gt(distance_squared, zero), hn::Gt(n_dot_l, zero)),
                                          hn::Not(hn::Eq(visible, zero)));  // Eq: NaN-safe on every target
@@ -129,8 +148,9 @@ void LightPoints(LightingBatch& batch, size_t first, size_t count, const Materia
                                                highlight_at_or_below_zero);
             for (int c = 0; c < 3; ++c) {
                 const float radiance_c = light.color[c] * light.intensity;
-                const V radiance = light.attenuate ? hn::Div(hn::Set(d, radiance_c), distance_squared)
-                                                   : hn::Set(d, radiance_c);
+                V radiance = hn::Set(d, radiance_c);
+                if (light.type == LightType::spot) radiance = hn::Mul(radiance, fade);
+                if (light.attenuate && !directional) radiance = hn::Div(radiance, distance_squared);
                 V lit = hn::Mul(hn::Mul(radiance, hn::Set(d, material.diffuse[c])), n_dot_l);
                 V shine = hn::Mul(hn::Mul(radiance, hn::Set(d, material.specular[c])), highlight);
                 if (visibility) {

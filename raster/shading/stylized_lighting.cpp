@@ -38,9 +38,13 @@ LightingTerms evaluate_gooch_lighting(const glm::vec3& position, const glm::vec3
     if (!lights.empty()) {
         const Light& key = lights.front();
         const float visible = visibility ? visibility[0] : 1.0f;
-        const glm::vec3 offset = key.position - position;
-        const float distance = glm::length(offset);
-        if (distance > 0.0f) t = 0.5f * (1.0f + glm::dot(normal, offset / distance)) * visible;
+        if (key.type == LightType::directional) {
+            t = 0.5f * (1.0f + glm::dot(normal, directional_to_light(key))) * visible;
+        } else {
+            const glm::vec3 offset = key.position - position;
+            const float distance = glm::length(offset);
+            if (distance > 0.0f) t = 0.5f * (1.0f + glm::dot(normal, offset / distance)) * visible;
+        }
         LightArrival arrival;
         if (light_arrives(key, position, normal, arrival)) {
             const float lobe = blinn_lobe(normal, arrival.to_light, to_eye);

@@ -37,7 +37,7 @@ public:
     // The face colour, else the interpolated vertex colour, else the material colour; no texture.
     glm::vec3 base_color(uint32_t triangle, const glm::vec3& bary) const {
         const uint32_t mesh_index = geometry_.triangle_mesh[triangle];
-        const MeshData& mesh = scene_.meshes[mesh_index].data;
+        const MeshData& mesh = *scene_.meshes[mesh_index].data;
         const uint32_t local = triangle - geometry_.mesh_first_triangle[mesh_index];
         if (!mesh.face_colors.empty()) return mesh.face_colors[local];
         if (!mesh.colors.empty()) {
@@ -48,7 +48,7 @@ public:
     }
     // Whether base_color varies over the triangle (interpolated vertex colours), else it is one colour.
     bool base_varies(uint32_t triangle) const {
-        const MeshData& mesh = scene_.meshes[geometry_.triangle_mesh[triangle]].data;
+        const MeshData& mesh = *scene_.meshes[geometry_.triangle_mesh[triangle]].data;
         return mesh.face_colors.empty() && !mesh.colors.empty();
     }
     bool textured() const { return !textures_.empty(); }

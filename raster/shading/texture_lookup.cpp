@@ -44,12 +44,12 @@ TextureLookup::TextureLookup(const Scene& scene, const TransformedScene& geometr
     const int width = scene.settings.width, height = scene.settings.height;
     for (uint32_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
         const SceneMesh& source = scene.meshes[mesh];
-        if (source.data.corner_uvs.empty()) continue;
+        if (source.data->corner_uvs.empty()) continue;
         const uint32_t first = geometry.mesh_first_triangle[mesh];
-        for (uint32_t local = 0; local < source.data.triangles.size(); ++local) {
+        for (uint32_t local = 0; local < source.data->triangles.size(); ++local) {
             if (!material_of(source, local).texture) continue;
             const TriangleIndices& v = geometry.triangles[first + local];
-            corner_uv_[first + local] = source.data.corner_uvs[local];
+            corner_uv_[first + local] = source.data->corner_uvs[local];
             gradient_[first + local] =
                 barycentric_gradient(geometry.clip[v.v[0]], geometry.clip[v.v[1]], geometry.clip[v.v[2]], width, height);
         }

@@ -15,12 +15,12 @@ std::optional<WorldBounds> world_bounds(const Scene& scene) {
     std::vector<glm::dvec3> points;
     for (const SceneMesh& mesh : scene.meshes) {
         const glm::mat4 model = model_matrix(mesh.transform);
-        std::vector<bool> used(mesh.data.positions.size(), false);
-        for (const TriangleIndices& triangle : mesh.data.triangles)
+        std::vector<bool> used(mesh.data->positions.size(), false);
+        for (const TriangleIndices& triangle : mesh.data->triangles)
             for (const uint32_t v : triangle.v) {
                 if (used[v]) continue;
                 used[v] = true;
-                points.push_back(glm::dvec3(glm::dmat4(model) * glm::dvec4(glm::dvec3(mesh.data.positions[v]), 1.0)));
+                points.push_back(glm::dvec3(glm::dmat4(model) * glm::dvec4(glm::dvec3(mesh.data->positions[v]), 1.0)));
             }
     }
     if (points.empty()) return std::nullopt;

@@ -28,9 +28,13 @@ void pose_scene(Scene& scene, float time) {
         steps.insert(steps.end(), chain.begin(), chain.end());
         scene.meshes[m].transform.steps = std::move(steps);
     }
-    for (size_t l = 0; l < scene.lights.size() && l < animation.light_nodes.size(); ++l)
-        if (animation.light_nodes[l] >= 0)
-            scene.lights[l].position = glm::vec3(compose_steps(node_chain_at(animation, animation.light_nodes[l], time))[3]);
+    for (size_t l = 0; l < scene.lights.size() && l < animation.light_nodes.size(); ++l) {
+        if (animation.light_nodes[l] < 0) continue;
+        // At its node's origin, shining down its node's -z.
+        const glm::mat4 pose = compose_steps(node_chain_at(animation, animation.light_nodes[l], time));
+        scene.lights[l].position = glm::vec3(pose[3]);
+        scene.lights[l].direction = -glm::vec3(pose[2]);
+    }
     if (animation.camera_node >= 0)
         camera_from_pose(compose_steps(node_chain_at(animation, animation.camera_node, time)), scene.camera);
 }

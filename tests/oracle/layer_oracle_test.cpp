@@ -122,7 +122,7 @@ TEST(LayerCheck, aPaneEdgeWithinTheSnapRadiusOfASampleIsOpenEvenWhereEmbreeMisse
         const double pixel = 2.0 * depth * tan_half / scene.settings.height;  // world size of a pixel at that depth
         SceneMesh edge = facing_pane(depth, 1.0, {0.81f, 0.13f, 0.27f}, 0.4f);
         const float right = static_cast<float>(0.5 * pixel + side * pixel / 4096.0);  // pixel 12's sample: 0.5 px
-        for (auto& p : edge.data.positions) p.x = p.x > 0.0f ? right : -1.0f;
+        for (auto& p : mutable_data(edge).positions) p.x = p.x > 0.0f ? right : -1.0f;
         scene.meshes.push_back(edge);
         const OracleScene geometry = oracle_scene(scene);
         const ReferenceGeometry reference(scene, geometry);

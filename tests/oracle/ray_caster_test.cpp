@@ -61,7 +61,7 @@ Scene in_float_view_space(const Scene& scene) {
     out.camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
     for (SceneMesh& mesh : out.meshes) {
         const glm::mat4 model_view = view_matrix(scene.camera) * model_matrix(mesh.transform);
-        for (glm::vec3& p : mesh.data.positions) p = glm::vec3(model_view * glm::vec4(p, 1.0f));
+        for (glm::vec3& p : mutable_data(mesh).positions) p = glm::vec3(model_view * glm::vec4(p, 1.0f));
         mesh.transform = {};
     }
     return out;

@@ -192,11 +192,11 @@ TEST(BoundaryEdges, areTheSilhouettesAndOpenEdgesSeenFromTheLight) {
     // both face away) is a boundary; every edge between a lit and an unlit face is.
     Scene scene;
     SceneMesh cube;
-    cube.data.positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
+    mutable_data(cube).positions = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
     const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
     for (const auto& f : faces) {
-        cube.data.triangles.push_back({{uint32_t(f[0]), uint32_t(f[1]), uint32_t(f[2])}});
-        cube.data.triangles.push_back({{uint32_t(f[0]), uint32_t(f[2]), uint32_t(f[3])}});
+        mutable_data(cube).triangles.push_back({{uint32_t(f[0]), uint32_t(f[1]), uint32_t(f[2])}});
+        mutable_data(cube).triangles.push_back({{uint32_t(f[0]), uint32_t(f[2]), uint32_t(f[3])}});
     }
     scene.meshes.push_back(cube);
     scene.settings.shading = ShadingMode::blinn_phong;

@@ -253,7 +253,7 @@ TEST(Seed001, flatAndNestedArraysAndFaceColoursRead) {
                                      "nested.json");
     for (const Scene* scene : {&flat, &nested}) {
         ASSERT_EQ(scene->meshes.size(), 1u);
-        const MeshData& mesh = scene->meshes[0].data;
+        const MeshData& mesh = *scene->meshes[0].data;
         ASSERT_EQ(mesh.triangles.size(), 2u);
         EXPECT_EQ(mesh.triangles[1].v[1], 3u);
         EXPECT_EQ(mesh.positions[3], glm::vec3(1, 1, -1));

@@ -100,8 +100,8 @@ TEST(Seed003, texturedSceneTakesItsTextureFromTheObjsMaterialAndHasItsPpm) {
     ASSERT_TRUE(crate.texture.has_value());
     EXPECT_EQ(fs::path(crate.texture->path).filename(), "checker.ppm");
     EXPECT_EQ(crate.diffuse, glm::vec3(0.8f));  // the scene's coefficients, not the MTL's Kd 1
-    EXPECT_EQ(scene.meshes[1].data.corner_uvs.size(), scene.meshes[1].data.triangles.size());
-    EXPECT_TRUE(scene.meshes[0].data.corner_uvs.empty());  // the untextured floor keeps none
+    EXPECT_EQ(scene.meshes[1].data->corner_uvs.size(), scene.meshes[1].data->triangles.size());
+    EXPECT_TRUE(scene.meshes[0].data->corner_uvs.empty());  // the untextured floor keeps none
     const Pixels artefact = read_pnm(corpus("seeds/003/textured.ppm"));
     EXPECT_EQ(artefact.width, scene.settings.width);
     EXPECT_EQ(artefact.height, scene.settings.height);

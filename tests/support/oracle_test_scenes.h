@@ -28,8 +28,8 @@ inline Scene scene_with_triangles(const std::vector<Triangle>& triangles, const 
     for (const Triangle& t : triangles) {
         SceneMesh mesh;
         mesh.source = "inline";
-        mesh.data.positions = {t[0], t[1], t[2]};
-        mesh.data.triangles = {{{0, 1, 2}}};
+        mutable_data(mesh).positions = {t[0], t[1], t[2]};
+        mutable_data(mesh).triangles = {{{0, 1, 2}}};
         scene.meshes.push_back(std::move(mesh));
     }
     return scene;

@@ -14,8 +14,8 @@ namespace raster::test_support {
 // The quad a, b, c, d as the triangles (a, b, c) and (a, c, d).
 inline SceneMesh quad_mesh(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d) {
     SceneMesh mesh;
-    mesh.data.positions = {a, b, c, d};
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    mutable_data(mesh).positions = {a, b, c, d};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     mesh.source = "inline";
     return mesh;
 }
@@ -36,12 +36,12 @@ inline SceneMesh grid_mesh(int n, const glm::vec3& colour, float opacity = 1.0f)
     SceneMesh mesh;
     for (int y = 0; y <= n; ++y)
         for (int x = 0; x <= n; ++x)
-            mesh.data.positions.emplace_back(-1.0f + 2.0f * x / n, -1.0f + 2.0f * y / n, 0.0f);
+            mutable_data(mesh).positions.emplace_back(-1.0f + 2.0f * x / n, -1.0f + 2.0f * y / n, 0.0f);
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
             const auto corner = static_cast<uint32_t>(y * (n + 1) + x), above = corner + static_cast<uint32_t>(n + 1);
-            mesh.data.triangles.push_back({{corner, corner + 1, above + 1}});
-            mesh.data.triangles.push_back({{corner, above + 1, above}});
+            mutable_data(mesh).triangles.push_back({{corner, corner + 1, above + 1}});
+            mutable_data(mesh).triangles.push_back({{corner, above + 1, above}});
         }
     mesh.material.color = colour;
     mesh.material.opacity = opacity;

@@ -134,9 +134,9 @@ TEST(MeshScene, aPlyFileInMemoryKeepsItsVertexColours) {
     ASSERT_EQ(file.scene.meshes.size(), 1u);
     // The colours are the file's, and the material's own colour is white, so the base colour is theirs alone.
     const SceneMesh& mesh = file.scene.meshes[0];
-    ASSERT_EQ(mesh.data.colors.size(), 3u);
-    EXPECT_EQ(mesh.data.colors[0], glm::vec3(1, 0, 0));
-    EXPECT_EQ(mesh.data.colors[2], glm::vec3(0, 0, 1));
+    ASSERT_EQ(mesh.data->colors.size(), 3u);
+    EXPECT_EQ(mesh.data->colors[0], glm::vec3(1, 0, 0));
+    EXPECT_EQ(mesh.data->colors[2], glm::vec3(0, 0, 1));
     EXPECT_EQ(mesh.material.color, glm::vec3(1.0f));
     EXPECT_TRUE(mesh.parts.empty());
 }

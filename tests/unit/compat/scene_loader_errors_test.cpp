@@ -101,6 +101,19 @@ const std::vector<Rejection> kRejections = {
     {"upAlongTheViewDirection", with_triangle("camera:\n  eye: [0, 5, 0]\n  up: [0, 1, 0]\n"), 3, 7, "parallel"},
     {"upAgainstTheViewDirection", with_triangle("camera:\n  eye: [0, 5, 0]\n  up: [0, -2, 0]\n"), 3, 7, "parallel"},
     {"upZero", with_triangle("camera:\n  eye: [0, 0, 5]\n  up: [0, 0, 0]\n"), 3, 7, "up"},
+    // Lights: a type, what places it (a directional light no position, a point light no direction), and the light
+    // check (a directional light casts no shadows; a spot light's inner cone is inside its outer one).
+    {"lightTypeUnknown", with_triangle("lights:\n  - {type: sun, direction: [0, -1, 0]}\n"), 2, 12,
+     "light type must be point, directional or spot"},
+    {"directionalWithAPosition", with_triangle("lights:\n  - {type: directional, position: [0, 1, 0]}\n"), 2, 35,
+     "a directional light has a direction, not a position"},
+    {"directionalCastingShadows",
+     with_triangle("lights:\n  - {type: directional, direction: [0, -1, 0], shadows: true}\n"), 2, 5,
+     "casts no shadows"},
+    {"spotConesCrossed",
+     with_triangle("lights:\n  - {type: spot, position: [0, 2, 0], direction: [0, -1, 0], inner_cone: 40, "
+                   "outer_cone: 30}\n"),
+     2, 5, "cone angles must be 0 <= inner_cone < outer_cone <= 90 degrees"},
     // Orthographic cameras: a height, not a field of view; near may be 0 but not less.
     {"projectionUnknown", with_triangle("camera:\n  projection: isometric\n"), 2, 15, "perspective or orthographic"},
     {"fieldOfViewOnAnOrthographicCamera", with_triangle("camera:\n  projection: orthographic\n  fov: 30\n"), 3, 8,

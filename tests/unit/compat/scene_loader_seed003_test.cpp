@@ -73,7 +73,7 @@ TEST(SceneLoader, seed003SceneInTheDocumentsKeySetLoads) {
     expect_vec3(scene.lights[0].color, 1, 0.5f, 0.25f);
     ASSERT_EQ(scene.meshes.size(), 1u);
     const raster::SceneMesh& mesh = scene.meshes[0];
-    EXPECT_EQ(mesh.data.triangles.size(), 1u);
+    EXPECT_EQ(mesh.data->triangles.size(), 1u);
     expect_vec3(mesh.material.ambient, 0.1f, 0.2f, 0.3f);
     expect_vec3(mesh.material.diffuse, 0.4f, 0.5f, 0.6f);
     expect_vec3(mesh.material.specular, 0.7f, 0.8f, 0.9f);
@@ -95,7 +95,7 @@ TEST(SceneLoader, seed003ObjPathIsRelativeToTheSceneFile) {
     TempDir dir;
     dir.write("deep/models/tri.obj", kObjWithNormals);
     const fs::path path = dir.write("deep/scene.json", seed003_scene("models/tri.obj", "-0.1", "-100"));
-    EXPECT_EQ(raster::load_scene(path).meshes.at(0).data.triangles.size(), 1u);
+    EXPECT_EQ(raster::load_scene(path).meshes.at(0).data->triangles.size(), 1u);
     // An absolute path works from anywhere.
     const std::string absolute = (dir.path() / "deep/models/tri.obj").string();
     EXPECT_EQ(parse_scene(seed003_scene(absolute, "-0.1", "-100"), "elsewhere/x.json").meshes.size(), 1u);
@@ -117,11 +117,11 @@ TEST(SceneLoader, seed003DropsNormalsFromTheObj) {
     TempDir dir;
     dir.write("tri.obj", kObjWithNormals);
     const Scene scene = parse_scene(seed003_scene("tri.obj", "-0.1", "-100"), (dir.path() / "s.json").string());
-    EXPECT_TRUE(scene.meshes.at(0).data.normals.empty());
+    EXPECT_TRUE(scene.meshes.at(0).data->normals.empty());
     // The same OBJ in a raster scene keeps them.
     const Scene raster_scene = parse_scene("meshes:\n  - file: tri.obj\n", (dir.path() / "s.yaml").string());
-    ASSERT_EQ(raster_scene.meshes.at(0).data.normals.size(), 3u);
-    expect_vec3(raster_scene.meshes[0].data.normals[0], 1, 0, 0);
+    ASSERT_EQ(raster_scene.meshes.at(0).data->normals.size(), 3u);
+    expect_vec3(raster_scene.meshes[0].data->normals[0], 1, 0, 0);
 }
 
 TEST(SceneLoader, seed003UnknownKeysAreWarningsNotErrors) {
@@ -154,7 +154,7 @@ TEST(SceneLoader, detectsFormatByContentNotExtension) {
     // A seed 003 scene in the same extension: read as seed 003 (width at the top level, obj meshes).
     const Scene seed = parse_scene(seed003_scene("tri.obj", "-0.1", "-100"), (dir.path() / "seed.json").string());
     EXPECT_EQ(seed.settings.width, 64);
-    EXPECT_TRUE(seed.meshes.at(0).data.normals.empty());
+    EXPECT_TRUE(seed.meshes.at(0).data->normals.empty());
     // And a seed 003 scene written as YAML in a .yaml file is still seed 003.
     const Scene seed_yaml = parse_scene("eye: [0, 0, 3]\nlookat: [0, 0, 0]\nup: [0, 1, 0]\nfov_angle: 50\n"
                                         "width: 30\nheight: 20\nnear: -1\nfar: -10\nlights: []\n"

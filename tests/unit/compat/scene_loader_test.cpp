@@ -97,6 +97,23 @@ TEST(SceneLoader, readsAnOrthographicCameraWithNearAtZero) {
               raster::Projection::perspective);
 }
 
+TEST(SceneLoader, readsDirectionalAndSpotLightsWithConesInDegrees) {
+    const Scene scene = parse_scene(std::string("lights:\n"
+                                                "  - {type: directional, direction: [0, -2, 0], intensity: 0.5}\n"
+                                                "  - {type: spot, position: [0, 3, 0], direction: [0, -1, 0], "
+                                                "inner_cone: 30, outer_cone: 45, attenuation: true, shadows: true}\n"
+                                                "meshes:\n") + kTriangle,
+                                    "scene.yaml");
+    ASSERT_EQ(scene.lights.size(), 2u);
+    EXPECT_EQ(scene.lights[0].type, raster::LightType::directional);
+    expect_vec3(scene.lights[0].direction, 0, -2, 0);
+    EXPECT_EQ(scene.lights[1].type, raster::LightType::spot);
+    expect_vec3(scene.lights[1].position, 0, 3, 0);
+    EXPECT_NEAR(scene.lights[1].inner_cone, 3.14159265 / 6, 1e-6);
+    EXPECT_NEAR(scene.lights[1].outer_cone, 3.14159265 / 4, 1e-6);
+    EXPECT_TRUE(scene.lights[1].shadows);
+}
+
 TEST(SceneLoader, noLightsByDefault) {
     const Scene scene = parse_scene(std::string("meshes:\n") + kTriangle, "scene.yaml");
     EXPECT_TRUE(scene.lights.empty());
@@ -273,7 +290,7 @@ TEST(SceneLoader, inlinePolygonsAreFanTriangulated) {
                                     "  - vertices: [[0, 0, 0], [2, 0, 0], [3, 1, 0], [1, 3, 0], [-1, 1, 0]]\n"
                                     "    faces: [[0, 1, 2, 3, 4], [1, 2, 3]]\n",
                                     "scene.yaml");
-    const raster::MeshData& mesh = scene.meshes.at(0).data;
+    const raster::MeshData& mesh = *scene.meshes.at(0).data;
     ASSERT_EQ(mesh.positions.size(), 5u);
     ASSERT_EQ(mesh.triangles.size(), 4u);  // 5-gon -> 3 triangles, plus one
     const uint32_t expected[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {1, 2, 3}};
@@ -292,7 +309,7 @@ TEST(SceneLoader, inlineVertexColorsAndNormalsArePerVertex) {
                                     "    vertex_colors: [[1, 0, 0], [0, 1, 0], [0, 0, 1], 0.25]\n"
                                     "    normals: [[0, 0, 1], [0, 0, 1], [0, 1, 0], [1, 0, 0]]\n",
                                     "scene.yaml");
-    const raster::MeshData& mesh = scene.meshes.at(0).data;
+    const raster::MeshData& mesh = *scene.meshes.at(0).data;
     ASSERT_EQ(mesh.colors.size(), 4u);
     expect_vec3(mesh.colors[0], 1, 0, 0);
     expect_vec3(mesh.colors[1], 0, 1, 0);
@@ -309,7 +326,7 @@ TEST(SceneLoader, inlineFaceColorsExpandToEveryTriangleOfTheirPolygon) {
                                     "    faces: [[0, 1, 2, 3], [2, 4, 5], [0, 1, 2, 4, 5]]\n"
                                     "    face_colors: [[1, 0, 0], [0, 0, 1], 0.5]\n",
                                     "scene.yaml");
-    const raster::MeshData& mesh = scene.meshes.at(0).data;
+    const raster::MeshData& mesh = *scene.meshes.at(0).data;
     ASSERT_EQ(mesh.triangles.size(), 6u);  // 2 + 1 + 3
     ASSERT_EQ(mesh.face_colors.size(), 6u);
     expect_vec3(mesh.face_colors[0], 1, 0, 0);

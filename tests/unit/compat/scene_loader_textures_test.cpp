@@ -39,8 +39,8 @@ TEST(SceneTextures, anObjsUsemtlRunsBecomeMaterialParts) {
     EXPECT_EQ(binding.texture->levels.size(), 2u);  // 2x2 and 1x1: trilinear builds the chain
     EXPECT_EQ(&material_of(mesh, 1), &mesh.parts[0].material);
     EXPECT_EQ(&material_of(mesh, 0), &mesh.material);
-    ASSERT_EQ(mesh.data.corner_uvs.size(), 2u);
-    EXPECT_EQ(mesh.data.corner_uvs[1].uv[2], glm::vec2(0, 1));
+    ASSERT_EQ(mesh.data->corner_uvs.size(), 2u);
+    EXPECT_EQ(mesh.data->corner_uvs[1].uv[2], glm::vec2(0, 1));
 }
 
 TEST(SceneTextures, strictlyAMissingImageNamesTheMtlLine) {
@@ -82,7 +82,7 @@ TEST(SceneTextures, lenientlyAMissingImageOrLibraryIsDrawnWithoutIt) {
     ASSERT_EQ(mesh.parts.size(), 1u);
     EXPECT_EQ(mesh.parts[0].material.diffuse, glm::vec3(0.25f));
     EXPECT_FALSE(mesh.parts[0].material.texture);
-    EXPECT_TRUE(mesh.data.corner_uvs.empty());  // no material reads them now
+    EXPECT_TRUE(mesh.data->corner_uvs.empty());  // no material reads them now
 
     fs::remove(dir / "quad.mtl");
     const Scene bare = load_scene(dir / "scene.yaml");
@@ -123,7 +123,7 @@ TEST(SceneTextures, rasterFormatTextureKeysAndInlineUvs) {
     EXPECT_EQ(binding.filter, TextureFilter::nearest);
     EXPECT_EQ(binding.wrap, TextureWrap::mirror);
     EXPECT_EQ(binding.texture->levels.size(), 1u);  // nearest reads no mip chain, so none is built
-    EXPECT_EQ(scene.meshes[0].data.corner_uvs.at(0).uv[2], glm::vec2(0, 3));
+    EXPECT_EQ(scene.meshes[0].data->corner_uvs.at(0).uv[2], glm::vec2(0, 3));
 }
 
 TEST(SceneTextures, anUntexturedSceneKeepsNoTextureCoordinates) {
@@ -131,7 +131,7 @@ TEST(SceneTextures, anUntexturedSceneKeepsNoTextureCoordinates) {
     dir.write("quad.obj", kQuadObj);
     dir.write("quad.mtl", "newmtl plain\nnewmtl wood\n");
     const Scene scene = load_scene(dir.write("scene.yaml", kRasterScene));
-    EXPECT_TRUE(scene.meshes[0].data.corner_uvs.empty());
+    EXPECT_TRUE(scene.meshes[0].data->corner_uvs.empty());
     EXPECT_FALSE(has_textures(scene));
 }
 

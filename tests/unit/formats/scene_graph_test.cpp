@@ -41,7 +41,7 @@ TEST(SceneGraph, aShapePlacedByTwoNodesIsDrawnWhereEachPutsIt) {
     // The shape's own step first: (0, 0, 0) to (0, 0, 1); then the node's.
     EXPECT_EQ(placed(scene.meshes[0], {0, 0, 0}), glm::vec3(5, 0, 1));
     EXPECT_EQ(placed(scene.meshes[1], {0, 0, 0}), glm::vec3(0, 0, 2));
-    EXPECT_EQ(scene.meshes[0].data.positions, scene.meshes[1].data.positions);
+    EXPECT_EQ(scene.meshes[0].data.get(), scene.meshes[1].data.get());  // one copy of the vertices, shared
 }
 
 TEST(SceneGraph, aChildsChainIsItsOwnThenItsParents) {

@@ -127,8 +127,8 @@ TEST(Interpolation, affineIsLinearInScreenSpaceAndPerspectiveIsNot) {
 SceneMesh square_wall(float half, float z) {
     SceneMesh mesh;
     mesh.source = "inline";
-    mesh.data.positions = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
-    mesh.data.triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
+    mutable_data(mesh).positions = {{-half, -half, z}, {half, -half, z}, {half, half, z}, {-half, half, z}};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}, {{0, 2, 3}}};
     return mesh;
 }
 

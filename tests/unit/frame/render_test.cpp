@@ -100,7 +100,7 @@ TEST(Render, singleTriangleCoversItsProjectedArea) {
                                 view_matrix(scene.camera);
     glm::vec2 p[3];
     for (int i = 0; i < 3; ++i) {
-        const glm::vec4 c = to_screen * glm::vec4(scene.meshes[0].data.positions[i], 1.0f);
+        const glm::vec4 c = to_screen * glm::vec4(scene.meshes[0].data->positions[i], 1.0f);
         p[i] = glm::vec2(c) / c.w;
     }
     const double area = 0.5 * std::fabs((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x));

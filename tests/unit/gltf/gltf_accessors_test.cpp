@@ -56,9 +56,9 @@ TEST(GltfAccessors, aStrideSkipsTheBytesBetweenElements) {
     b.document["bufferViews"][0]["byteStride"] = 16;
     b.node({{"mesh", b.mesh({{"attributes", {{"POSITION", p}}}})}});
     const Scene scene = read_built(b);
-    ASSERT_EQ(scene.meshes[0].data.positions.size(), 3u);
-    EXPECT_EQ(scene.meshes[0].data.positions[1], glm::vec3(1, 0, 0));
-    EXPECT_EQ(scene.meshes[0].data.positions[2], glm::vec3(0, 1, 0));
+    ASSERT_EQ(scene.meshes[0].data->positions.size(), 3u);
+    EXPECT_EQ(scene.meshes[0].data->positions[1], glm::vec3(1, 0, 0));
+    EXPECT_EQ(scene.meshes[0].data->positions[2], glm::vec3(0, 1, 0));
 }
 
 TEST(GltfAccessors, anIndexPastTheVerticesIsRefused) {
@@ -77,7 +77,7 @@ TEST(GltfAccessors, indicesOfEachWidthAreRead) {
         b.document["meshes"][0]["primitives"][0]["indices"] = indices;
         const Scene scene = read_built(b);
         // No normals: the corners become vertices in order, so the first is the old vertex 2.
-        EXPECT_EQ(scene.meshes[0].data.positions[0], glm::vec3(0, 1, 0)) << type;
+        EXPECT_EQ(scene.meshes[0].data->positions[0], glm::vec3(0, 1, 0)) << type;
     }
 }
 
@@ -118,8 +118,8 @@ TEST(GltfAccessors, anAccessorWithoutAViewIsZeros) {
     b.document["accessors"].push_back({{"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
     b.document["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 1;
     const Scene scene = read_built(b);
-    ASSERT_EQ(scene.meshes[0].data.normals.size(), 3u);
-    EXPECT_EQ(scene.meshes[0].data.normals[2], glm::vec3(0.0f));
+    ASSERT_EQ(scene.meshes[0].data->normals.size(), 3u);
+    EXPECT_EQ(scene.meshes[0].data->normals[2], glm::vec3(0.0f));
 }
 
 TEST(GltfAccessors, normalizedIntegersMapToTheUnitInterval) {
@@ -127,8 +127,8 @@ TEST(GltfAccessors, normalizedIntegersMapToTheUnitInterval) {
     b.document["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] =
         b.accessor(std::vector<uint16_t>{65535, 0, 32768, 0, 65535, 0, 0, 0, 65535}, "VEC3", 5123, true);
     const Scene scene = read_built(b);
-    EXPECT_FLOAT_EQ(scene.meshes[0].data.colors[0].x, 1.0f);
-    EXPECT_FLOAT_EQ(scene.meshes[0].data.colors[0].z, 32768.0f / 65535.0f);
+    EXPECT_FLOAT_EQ(scene.meshes[0].data->colors[0].x, 1.0f);
+    EXPECT_FLOAT_EQ(scene.meshes[0].data->colors[0].z, 32768.0f / 65535.0f);
 
     // The same integers without `normalized` are not colours.
     GltfBuilder raw = triangle();

@@ -73,7 +73,8 @@ TEST(GltfScene, oneMeshPlacedByTwoNodesIsDrawnTwiceWhereEachPutsIt) {
     b.node({{"mesh", mesh}, {"translation", {2, 0, 0}}});
     const Scene scene = read_built(b);
     ASSERT_EQ(scene.meshes.size(), 2u);
-    EXPECT_EQ(scene.meshes[0].data.positions, scene.meshes[1].data.positions);
+    // One copy of the vertices, shared by both placements (instancing without copying).
+    EXPECT_EQ(scene.meshes[0].data.get(), scene.meshes[1].data.get());
     expect_near(placed(scene.meshes[0], {0, 0, 0}), {-2, 0, 0});
     expect_near(placed(scene.meshes[1], {0, 0, 0}), {2, 0, 0});
     EXPECT_EQ(scene.meshes[0].source, "model.gltf#/meshes/0/primitives/0");
@@ -163,20 +164,41 @@ TEST(GltfScene, aCameraWithoutZfarGetsAFarPlaneBeyondTheWholeScene) {
     EXPECT_LT(scene.camera.far, 2.0f * std::sqrt(2501.0f));
 }
 
-TEST(GltfScene, aPointLightSitsAtItsNodesOriginAndOtherLightsAreLeftOut) {
+TEST(GltfScene, lightsSitAtTheirNodesOriginAndShineDownItsMinusZ) {
     GltfBuilder b = GltfBuilder::one_triangle();
     b.document["extensions"]["KHR_lights_punctual"]["lights"] = {
-        {{"type", "point"}, {"color", {1, 0.5, 0.25}}, {"intensity", 30}}, {{"type", "directional"}}};
+        {{"type", "point"}, {"color", {1, 0.5, 0.25}}, {"intensity", 30}},
+        {{"type", "directional"}, {"intensity", 2}},
+        {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.25}, {"outerConeAngle", 0.5}}}}};
     b.node({{"translation", {1, 2, 3}}, {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}});
-    b.node({{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    // A quarter turn about +x turns -z to +y: the sun shines upwards.
+    b.node({{"rotation", {kHalfRoot2, 0, 0, kHalfRoot2}}, {"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}});
+    // A quarter turn about +y turns -z to -x.
+    b.node({{"translation", {0, 4, 0}},
+            {"rotation", {0, kHalfRoot2, 0, kHalfRoot2}},
+            {"extensions", {{"KHR_lights_punctual", {{"light", 2}}}}}});
     GltfSceneParts parts;
     const Scene scene = read_built(b, &parts);
     EXPECT_TRUE(parts.lights);
-    ASSERT_EQ(scene.lights.size(), 1u);
+    ASSERT_EQ(scene.lights.size(), 3u);
+    EXPECT_EQ(scene.lights[0].type, LightType::point);
     expect_near(scene.lights[0].position, {1, 2, 3});
     expect_near(scene.lights[0].color, {1, 0.5f, 0.25f});
     EXPECT_FLOAT_EQ(scene.lights[0].intensity, 30.0f);
-    EXPECT_TRUE(scene.lights[0].attenuate);
+    EXPECT_TRUE(scene.lights[0].attenuate);  // candela: the inverse square law
+    EXPECT_EQ(scene.lights[1].type, LightType::directional);
+    expect_near(glm::normalize(scene.lights[1].direction), {0, 1, 0});
+    EXPECT_FALSE(scene.lights[1].attenuate);  // lux: no distance
+    EXPECT_EQ(scene.lights[2].type, LightType::spot);
+    expect_near(scene.lights[2].position, {0, 4, 0});
+    expect_near(glm::normalize(scene.lights[2].direction), {-1, 0, 0});
+    EXPECT_FLOAT_EQ(scene.lights[2].inner_cone, 0.25f);
+    EXPECT_FLOAT_EQ(scene.lights[2].outer_cone, 0.5f);
+    EXPECT_TRUE(scene.lights[2].attenuate);
+
+    b.document["extensions"]["KHR_lights_punctual"]["lights"][2]["spot"]["innerConeAngle"] = 0.75;
+    EXPECT_NE(read_error(b).find("/extensions/KHR_lights_punctual/lights/2: a spot light's cone angles"),
+              std::string::npos) << read_error(b);
 }
 
 TEST(GltfScene, withoutCameraOrLightTheCallerFramesAndLights) {
@@ -263,9 +285,9 @@ TEST(GltfScene, vertexColoursCarryTheBaseColourFactor) {
     b.document["materials"] = {{{"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 1, 1, 1}}}}}};
     const Scene scene = read_built(b);
     // No normals: each triangle has its own corners, in order, so vertex 0 is the first corner.
-    ASSERT_EQ(scene.meshes[0].data.colors.size(), 3u);
-    expect_near(scene.meshes[0].data.colors[0], {0.5f, 0.0f, 128.0f / 255.0f});
-    expect_near(scene.meshes[0].data.colors[1], {0.0f, 1.0f, 0.0f});
+    ASSERT_EQ(scene.meshes[0].data->colors.size(), 3u);
+    expect_near(scene.meshes[0].data->colors[0], {0.5f, 0.0f, 128.0f / 255.0f});
+    expect_near(scene.meshes[0].data->colors[1], {0.0f, 1.0f, 0.0f});
 }
 
 }  // namespace

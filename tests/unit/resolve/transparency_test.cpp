@@ -92,7 +92,7 @@ TEST(Transparency, theWeightedModeAveragesTheLayersByOpacityInAnyOrder) {
 // sample instead (as SSAA does, which the test shows differs here) would move the bytes.
 TEST(Transparency, msaaShadesATransparentTriangleOncePerPixelInEitherMode) {
     Scene scene = pane_scene({pane(3.0f, 1.0f, glm::vec3(1.0f), 0.5f)}, 4);
-    scene.meshes[0].data.colors = {{1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {1, 0, 0}};  // left red, right blue
+    mutable_data(scene.meshes[0]).colors = {{1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {1, 0, 0}};  // left red, right blue
     scene.settings.msaa = true;
     const RenderResult sorted = draw(scene);
     scene.settings.transparency.mode = TransparencyMode::weighted;
@@ -150,8 +150,8 @@ TEST(Transparency, panesCastNoShadow) {
     scene.settings.shading = ShadingMode::blinn_phong;
     scene.lights.push_back({glm::vec3(0, 4, 0), glm::vec3(1.0f), 1.0f, false, true});
     SceneMesh floor = pane(0.0f, 5.0f, kGrey, 1.0f), glass = pane(0.0f, 1.0f, kRed, 0.5f);
-    for (auto& p : floor.data.positions) p = glm::vec3(p.x, 0.0f, p.y);
-    for (auto& p : glass.data.positions) p = glm::vec3(p.x, 2.0f, p.y);
+    for (auto& p : mutable_data(floor).positions) p = glm::vec3(p.x, 0.0f, p.y);
+    for (auto& p : mutable_data(glass).positions) p = glm::vec3(p.x, 2.0f, p.y);
     scene.meshes = {floor, glass};
     const TransformedScene geometry = run_vertex_stage(scene, vertex_stage_needs(scene.settings.shading));
     const ShadowMaps maps = render_shadow_maps(scene, geometry.world_position, raster_backend(RasterPath::tiled), 2);

@@ -27,7 +27,8 @@ struct Case {
 };
 
 // A batch of points drawn to reach every branch: zero normals, points on a light, lights behind the surface,
-// shadowed (0), half-lit and lit lights, attenuated and plain lights.
+// shadowed (0), half-lit and lit lights, attenuated and plain lights, a directional light and a spot light whose
+// cone holds some points, fades over others and misses the rest.
 Case random_case(uint32_t seed, float exponent) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<float> coord(-3.0f, 3.0f), unit(0.0f, 1.0f);
@@ -35,6 +36,21 @@ Case random_case(uint32_t seed, float exponent) {
     c.lights = {{{2, 3, 1}, {1, 0.9f, 0.8f}, 0.9f, false},
                 {{-1, 0.5f, 2}, {0.5f, 0.6f, 0.9f}, 3.0f, true},
                 {{0, -2, -2}, {0.2f, 1, 0.4f}, 0.5f, false}};
+    Light sun;
+    sun.type = LightType::directional;
+    sun.direction = {-1.0f, -2.0f, -0.5f};
+    sun.color = {1.0f, 0.95f, 0.8f};
+    sun.intensity = 0.7f;
+    Light spot;
+    spot.type = LightType::spot;
+    spot.position = {0.5f, 2.5f, 1.0f};
+    spot.direction = {0.0f, -1.0f, -0.2f};
+    spot.inner_cone = 0.35f;
+    spot.outer_cone = 1.4f;
+    spot.attenuate = true;
+    spot.intensity = 2.0f;
+    c.lights.push_back(sun);
+    c.lights.push_back(spot);
     c.material.ambient = {0.1f, 0.12f, 0.08f};
     c.material.diffuse = {0.8f, 0.3f, 0.25f};
     c.material.specular = {0.5f, 0.5f, 0.6f};
@@ -116,13 +132,13 @@ TEST(LightingKernels, aPointGetsTheSameBitsAloneAsInABatch) {
     const Case c = random_case(7, 40.0f);
     const LightingBatch batch = lit(c, SpecularModel::blinn, true);
     for (size_t j = 0; j < kLightingBatch; ++j) {
-        float visibility[3];
-        for (size_t l = 0; l < 3; ++l) visibility[l] = c.visibility[l * LightingBatch::kRow + j];
+        std::vector<float> visibility(c.lights.size());
+        for (size_t l = 0; l < c.lights.size(); ++l) visibility[l] = c.visibility[l * LightingBatch::kRow + j];
         const glm::vec3 position(c.batch.position[0][j], c.batch.position[1][j], c.batch.position[2][j]);
         const glm::vec3 normal(batch.normal[0][j], batch.normal[1][j], batch.normal[2][j]);
         const glm::vec3 to_eye(batch.to_eye[0][j], batch.to_eye[1][j], batch.to_eye[2][j]);
         const LightingTerms one = evaluate_lighting(position, normal, to_eye, c.material, c.lights, glm::vec3(0.3f),
-                                                    SpecularModel::blinn, visibility);
+                                                    SpecularModel::blinn, visibility.data());
         for (int k = 0; k < 3; ++k) {
             EXPECT_EQ(one.diffuse[k], batch.diffuse[k][j]) << "point " << j;
             EXPECT_EQ(one.specular[k], batch.specular[k][j]) << "point " << j;
@@ -140,14 +156,22 @@ glm::dvec3 reference_term(const Case& c, size_t j, bool diffuse_term) {
     for (size_t l = 0; l < c.lights.size(); ++l) {
         const Light& light = c.lights[l];
         const double visible = c.visibility[l * LightingBatch::kRow + j];
-        const glm::dvec3 to_light = glm::dvec3(light.position) - p;
+        // docs/scene-format.md "Lights": a directional light along -direction, unattenuated; a spot light faded.
+        const bool directional = light.type == LightType::directional;
+        const glm::dvec3 to_light = directional ? -glm::dvec3(light.direction) : glm::dvec3(light.position) - p;
         const double r2 = glm::dot(to_light, to_light);
         if (r2 <= 0 || visible == 0) continue;
         const glm::dvec3 l_unit = to_light / std::sqrt(r2);
         const double n_dot_l = glm::dot(n, l_unit);
         if (n_dot_l <= 0) continue;
         glm::dvec3 radiance = glm::dvec3(light.color) * double(light.intensity);
-        if (light.attenuate) radiance /= r2;
+        if (light.type == LightType::spot) {
+            const double cd = -glm::dot(glm::normalize(glm::dvec3(light.direction)), l_unit);
+            const double inner = std::cos(double(light.inner_cone)), outer = std::cos(double(light.outer_cone));
+            const double fade = std::clamp((cd - outer) / std::max(0.001, inner - outer), 0.0, 1.0);
+            radiance *= fade * fade;
+        }
+        if (light.attenuate && !directional) radiance /= r2;
         if (diffuse_term) {
             sum += radiance * glm::dvec3(c.material.diffuse) * n_dot_l * visible;
         } else {

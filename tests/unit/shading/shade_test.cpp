@@ -75,9 +75,9 @@ Scene triangle_scene(ShadingMode mode) {
     scene.settings.shading = mode;
     scene.camera.eye = {0, 0, 5};
     SceneMesh mesh;
-    mesh.data.positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
-    mesh.data.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    mesh.data.triangles = {{{0, 1, 2}}};
+    mutable_data(mesh).positions = {{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    mutable_data(mesh).colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}};
     mesh.material = test_material();
     scene.meshes.push_back(mesh);
     scene.lights.push_back({{0, 0, 3}, {1, 1, 1}, 1.0f, false});

@@ -156,7 +156,7 @@ TEST(ShadowMaps, areTheSameFromTheTiledAndTheReferenceRasterizer) {
 // A grid of 2 n^2 triangles lying at height y over [x0, x0 + size] x [z0, z0 + size].
 SceneMesh level_grid(int n, float y, float x0, float z0, float size, float opacity) {
     SceneMesh grid = test_support::grid_mesh(n, glm::vec3(0.5f), opacity);
-    for (glm::vec3& p : grid.data.positions)
+    for (glm::vec3& p : mutable_data(grid).positions)
         p = glm::vec3(x0 + 0.5f * size * (p.x + 1.0f), y, z0 + 0.5f * size * (p.y + 1.0f));
     return grid;
 }
@@ -212,8 +212,8 @@ TEST(ShadowedRender, darkensTheShadowInEveryLitModeAndNothingElse) {
                 const size_t at = shadowed.visibility.index(x, y, 0);
                 if (shadowed.visibility.triangle[at] > 1) continue;  // not the floor
                 const glm::vec3& b = shadowed.visibility.bary[at];
-                const auto& p = scene.meshes[0].data.positions;
-                const uint32_t* v = scene.meshes[0].data.triangles[shadowed.visibility.triangle[at]].v;
+                const auto& p = scene.meshes[0].data->positions;
+                const uint32_t* v = scene.meshes[0].data->triangles[shadowed.visibility.triangle[at]].v;
                 const glm::vec3 point = b.x * p[v[0]] + b.y * p[v[1]] + b.z * p[v[2]];
                 const float reach = std::max(std::fabs(point.x), std::fabs(point.z));
                 const uint8_t *dark = shadowed.image.at(x, y), *bright = lit.image.at(x, y);

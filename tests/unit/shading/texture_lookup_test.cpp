@@ -53,9 +53,9 @@ Scene textured_triangle(int samples, bool msaa) {
     scene.settings.msaa = msaa;
     scene.settings.shading = ShadingMode::unlit;
     SceneMesh mesh;
-    mesh.data.positions = {{-1, -1, 0}, {1, -1, -1}, {0, 1, -2}};
-    mesh.data.triangles = {{{0, 1, 2}}};
-    mesh.data.corner_uvs = {{{glm::vec2(0, 0), glm::vec2(3, 0), glm::vec2(0, 2)}}};
+    mutable_data(mesh).positions = {{-1, -1, 0}, {1, -1, -1}, {0, 1, -2}};
+    mutable_data(mesh).triangles = {{{0, 1, 2}}};
+    mutable_data(mesh).corner_uvs = {{{glm::vec2(0, 0), glm::vec2(3, 0), glm::vec2(0, 2)}}};
     TextureBinding binding;
     binding.texture = std::make_shared<Texture>();
     mesh.material.texture = binding;
