@@ -26,15 +26,6 @@ float specular_power(float base, float exponent) {
     return std::pow(base, exponent);
 }
 
-glm::vec3 directional_to_light(const Light& light) { return unit_or_zero(-light.direction); }
-
-float spot_factor(const Light& light, const glm::vec3& to_light) {
-    const SpotFade fade = spot_fade(light);
-    const float cd = -glm::dot(unit_or_zero(light.direction), to_light);
-    const float f = std::clamp(cd * fade.scale + fade.offset, 0.0f, 1.0f);
-    return f * f;
-}
-
 bool light_arrives(const Light& light, const glm::vec3& position, const glm::vec3& normal, LightArrival& out) {
     const bool directional = light.type == LightType::directional;
     glm::vec3 to_light = directional ? directional_to_light(light) : light.position - position;

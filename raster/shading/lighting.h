@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "raster/shading/light_direction.h"
 #include "raster/shading/lighting_kernels.h"
 #include "raster/scene/scene.h"
 
@@ -32,12 +33,6 @@ struct LightArrival {
 // The radiance is colour x intensity, times a spot light's fade, divided by r^2 for an attenuated point or spot.
 bool light_arrives(const Light& light, const glm::vec3& position, const glm::vec3& normal, LightArrival& out);
 
-// The unit vector towards a directional light, normalize(-direction) in float (unit_or_zero).
-glm::vec3 directional_to_light(const Light& light);
-
-// A spot light's fade (scene.h SpotFade) for the unit vector `to_light` from the point to the light:
-// f^2 with f = clamp(cd * scale + offset, 0, 1) and cd = -dot(normalize(direction), to_light), in float.
-float spot_factor(const Light& light, const glm::vec3& to_light);
 
 // Blinn's lobe n.h, h the normalised half vector of the unit vectors to the light and to the eye (0 when they are
 // opposite).

@@ -11,7 +11,7 @@
 
 #include "raster/shading/lighting_kernels.h"
 #include "raster/core/unit_vector.h"
-#include "raster/shading/lighting.h"
+#include "raster/shading/light_direction.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace raster {
@@ -119,7 +119,7 @@ void LightPoints(LightingBatch& batch, size_t first, size_t count, const Materia
             }
             const V n_dot_l = dot(normal, to_light);
             V fade = hn::Set(d, 1.0f);
-            if (light.type == LightType::spot) {  // lighting.h spot_factor, lane by lane
+            if (light.type == LightType::spot) {  // light_direction.h spot_factor, lane by lane
                 const SpotFade cone = spot_fade(light);
                 const glm::vec3 axis = raster::unit_or_zero(light.direction);
                 const V cd = hn::Neg(dot(Vec3{hn::Set(d, axis.x), hn::Set(d, axis.y), hn::Set(d, axis.z)}, to_light));
