@@ -37,6 +37,10 @@ constexpr const char* kPage = R"PAGE(<!doctype html>
     <fieldset><legend>Anti-aliasing</legend>
       <label><input type="checkbox" id="msaa"> MSAA: shade once per pixel per triangle</label></fieldset>
     <fieldset id="filter"><legend>Texture filter</legend><div class="note" id="filter-note"></div></fieldset>
+    <fieldset id="animation" hidden><legend>Animation</legend>
+      <button type="button" id="play" aria-pressed="false">play</button>
+      <input type="range" id="time" min="0" max="1" step="0.01" aria-label="time">
+      <span class="readout" id="time-readout"></span></fieldset>
     <fieldset><legend>Camera</legend>
       <div class="readout" id="camera"></div>
       <button type="button" id="camera-reset">reset</button>
@@ -52,15 +56,19 @@ const SHADINGS = ['flat', 'gouraud', 'phong', 'blinn-phong', 'cel', 'gooch', 'un
 const SAMPLES = [1, 4, 16];
 const FILTERS = ['nearest', 'bilinear', 'trilinear', 'anisotropic'];
 const DEGREES_PER_PIXEL = 0.4;  // of drag
+const MIN_PLAY_STEP = 1 / 30;  // seconds of animation a played frame advances at least, however fast it came
 const ZOOM_PER_100_WHEEL = 1.1;  // distance factor per 100 units of wheel delta
 const selftest = new URLSearchParams(location.search).get('selftest') === '1';
 const $ = (id) => document.getElementById(id);
 const image = $('frame');
 
 // What the next frame asks for; filter null keeps the scene's own.
-const view = {shading: 'blinn-phong', samples: 1, msaa: false, filter: null, yaw: 0, pitch: 0, distance: 1};
+// time null: the scene as loaded (a static scene, or an animated one not yet played or scrubbed).
+const view = {shading: 'blinn-phong', samples: 1, msaa: false, filter: null, yaw: 0, pitch: 0, distance: 1, time: null};
 // From GET /state: the elevation limit, the scene eye's own elevation, the distance range, the scene's filter.
-const scene = {elevationLimit: 89, elevation: 0, distance: [0.05, 20], filter: 'none', textured: false};
+const scene = {elevationLimit: 89, elevation: 0, distance: [0.05, 20], filter: 'none', textured: false, animation: null};
+// Playing: the wall clock when the last frame was asked for, so the next advances by the time that passed.
+let playing = false, playedAt = 0;
 const frames = [];  // every frame shown: {params, index, ms, hash (self-test only)}
 let rendering = false, renderWanted = false, idleWaiters = [], shownUrl = null, drag = null;
 
@@ -76,6 +84,7 @@ function renderParams() {
   const params = {shading: view.shading, samples: String(view.samples), msaa: view.msaa ? '1' : '0',
                   yaw: view.yaw.toFixed(2), pitch: view.pitch.toFixed(2), distance: view.distance.toFixed(4)};
   if (view.filter) params.filter = view.filter;
+  if (view.time !== null) params.time = view.time.toFixed(3);
   return params;
 }
 
@@ -130,9 +139,31 @@ async function renderLoop() {
     }
   }
   rendering = false;
+  if (playing) return advancePlay();
   const waiters = idleWaiters;
   idleWaiters = [];
   waiters.forEach((resolve) => resolve());
+}
+
+// Playing: the next instant, by the wall time since the last (at least MIN_PLAY_STEP), wrapping at the last key.
+function advancePlay() {
+  const now = performance.now();
+  const {start, end} = scene.animation;
+  const step = Math.max(MIN_PLAY_STEP, (now - playedAt) / 1000);
+  playedAt = now;
+  const next = (view.time === null ? start : view.time) + step;
+  view.time = next > end ? start + ((next - start) % Math.max(end - start, MIN_PLAY_STEP)) : next;
+  requestFrame();
+}
+
+function setPlaying(on) {
+  playing = on;
+  $('play').setAttribute('aria-pressed', String(on));
+  $('play').textContent = on ? 'pause' : 'play';
+  if (on) {
+    playedAt = performance.now();
+    advancePlay();
+  }
 }
 
 function requestFrame() {
@@ -155,6 +186,11 @@ function showControls() {
   markPressed('samples', SAMPLES, view.samples);
   markPressed('filter', FILTERS, view.filter || scene.filter);
   $('msaa').checked = view.msaa;
+  if (scene.animation) {
+    const time = view.time === null ? scene.animation.start : view.time;
+    $('time').value = String(time);
+    $('time-readout').textContent = `${time.toFixed(2)} s`;
+  }
   $('camera').textContent =
     `yaw ${view.yaw.toFixed(1)}\u00b0, pitch ${view.pitch.toFixed(1)}\u00b0, distance ${view.distance.toFixed(2)}`;
 }
@@ -179,6 +215,12 @@ function buildControls() {
   addButtons('filter', FILTERS, (filter) => { view.filter = filter; });
   $('msaa').addEventListener('change', (event) => {
     view.msaa = event.target.checked;
+    requestFrame();
+  });
+  $('play').addEventListener('click', () => setPlaying(!playing));
+  $('time').addEventListener('input', (event) => {
+    setPlaying(false);
+    view.time = Number(event.target.value);
     requestFrame();
   });
   $('camera-reset').addEventListener('click', () => {
@@ -217,6 +259,41 @@ function buildControls() {
   }, {passive: false});
 }
 
+// The self-test's animation steps: the slider moved to the middle of the keys, then play pressed until three
+// frames have come, then pause; checks that each asked for its instant and that the instants moved on.
+async function animationSelfTest(report, step, before) {
+  const {start, end} = scene.animation;
+  const middle = (start + end) / 2;
+  const scrubbed = await step('time slider', () => {
+    $('time').value = String(middle);
+    $('time').dispatchEvent(new Event('input', {bubbles: true}));
+  });
+  const played = [];
+  await new Promise((resolve) => {
+    const seen = frames.length;
+    $('play').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
+    const poll = () => {
+      if (frames.length - seen >= 3) {
+        $('play').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
+        played.push(...frames.slice(seen));
+        resolve();
+      } else {
+        setTimeout(poll, 10);
+      }
+    };
+    poll();
+  });
+  await idle();
+  report.steps.push({name: 'play', new_frames: played.length, frame: frames[frames.length - 1]});
+  const times = played.map((frame) => Number(frame.params.time));
+  report.checks = {
+    slider_asked_for_its_instant: Math.abs(Number(scrubbed.params.time) - middle) < 0.01,
+    slider_changed_the_image: scrubbed.hash !== before.hash,
+    play_advanced_the_instant: times.length >= 3 && times.every((t, i) => i === 0 || t !== times[i - 1]),
+    pause_stopped_playing: !playing && $('play').getAttribute('aria-pressed') === 'false',
+  };
+}
+
 // The self-test (?selftest=1): a user's click, drag and wheel, as DOM events through the handlers above, each
 // followed by the frame it brought; the report says what each frame asked for and the hash of the bytes shown.
 async function runSelfTest() {
@@ -246,7 +323,9 @@ async function runSelfTest() {
     });
     const zoomed = await step('wheel', () => image.dispatchEvent(new WheelEvent('wheel', {
       bubbles: true, cancelable: true, deltaY: 300, ...centre})));
+    if (scene.animation) await animationSelfTest(report, step, zoomed);
     report.checks = {
+      ...report.checks,
       flat_asked_for: flat.params.shading === 'flat',
       flat_changed_the_image: flat.hash !== first.hash,
       drag_moved_the_camera: flat.params.yaw !== dragged.params.yaw && flat.params.pitch !== dragged.params.pitch,
@@ -274,7 +353,7 @@ async function start() {
                          msaa: state.scene_settings.msaa});
     Object.assign(scene, {elevationLimit: state.limits.elevation_degrees, elevation: state.camera.elevation_degrees,
                           distance: state.limits.distance, filter: state.scene_settings.filter,
-                          textured: state.textured});
+                          textured: state.textured, animation: state.animation});
     $('scene').textContent = `${state.scene} (${state.width} x ${state.height})`;
   } catch (error) {
     showStatus(`the viewer's state could not be read: ${error}`);
@@ -284,6 +363,11 @@ async function start() {
   if (!scene.textured) {
     for (const filter of FILTERS) $(`filter-${filter}`).disabled = true;
     $('filter-note').textContent = 'The scene has no textures: no filter changes it.';
+  }
+  if (scene.animation) {
+    const {start, end} = scene.animation;
+    Object.assign($('time'), {min: String(start), max: String(end), value: String(start)});
+    $('animation').hidden = false;
   }
   requestFrame();
   if (selftest) runSelfTest();

@@ -99,6 +99,13 @@ const std::map<std::string, ParameterParser>& parameter_parsers() {
              return parse_bounded("distance", value, kMinDistance, kMaxDistance,
                                   " (times the scene's eye-target distance)", request.distance);
          }},
+        {"time",
+         [](const std::string& value, ViewRequest& request) {
+             double time = 0.0;
+             std::string problem = parse_bounded("time", value, -kMaxViewTime, kMaxViewTime, " seconds", time);
+             if (problem.empty()) request.time = time;
+             return problem;
+         }},
     };
     return parsers;
 }

@@ -10,6 +10,8 @@
 #include "raster/frame/render.h"
 #include "raster/scene/validation.h"
 #include "raster/texture/mip_chains.h"
+#include "raster/transform/scene_pose.h"
+#include "raster/scene/animation.h"
 
 namespace raster::cli {
 namespace {
@@ -53,6 +55,7 @@ nlohmann::json to_json(const ViewerFrameRecord& record) {
             {"yaw", record.yaw_degrees},
             {"pitch", record.pitch_degrees},
             {"distance", record.distance},
+            {"time", record.time ? nlohmann::json(*record.time) : nlohmann::json(nullptr)},
             {"eye", to_json(record.eye)},
             {"frame_ms", record.frame_ms},
             {"encode_ms", record.encode_ms},
@@ -81,7 +84,11 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     if (request.shading) settings.shading = *request.shading;
     if (request.samples) settings.samples = *request.samples;
     if (request.msaa) settings.msaa = *request.msaa;
-    frame.camera = orbit_camera(scene_.camera, request.yaw_degrees, request.pitch_degrees, request.distance);
+    if (request.time) {
+        if (!frame.animation) throw ViewRequestError("time: the scene has no animation to pose");
+        pose_scene(frame, static_cast<float>(*request.time));  // the camera too, where the animation carries it
+    }
+    frame.camera = orbit_camera(frame.camera, request.yaw_degrees, request.pitch_degrees, request.distance);
     if (std::string problem = settings_problem(settings); !problem.empty()) throw ViewRequestError(problem);
     if (const auto problem = camera_problem(frame.camera)) throw ViewRequestError(problem->message);
 
@@ -100,6 +107,7 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     record.yaw_degrees = request.yaw_degrees;
     record.pitch_degrees = request.pitch_degrees;
     record.distance = request.distance;
+    record.time = request.time;
     record.eye = frame.camera.eye;
     record.frame_ms = buffers_.stats.ms_total;
     record.png_bytes = result.png.size();
@@ -116,6 +124,8 @@ nlohmann::json ViewerSession::state() const {
             {"width", scene_.settings.width},
             {"height", scene_.settings.height},
             {"textured", has_textures(scene_)},
+            {"animation", scene_.animation ? nlohmann::json{{"start", scene_.animation->start}, {"end", scene_.animation->end}}
+                                           : nlohmann::json(nullptr)},
             {"scene_settings",
              {{"shading", to_string(scene_.settings.shading)},
               {"samples", scene_.settings.samples},

@@ -6,6 +6,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -26,6 +27,7 @@ struct ViewerFrameRecord {
     bool msaa = false;
     std::string filter;  // the filter asked for, or "scene" when the request kept the scene's own
     double yaw_degrees = 0, pitch_degrees = 0, distance = 1;
+    std::optional<double> time;  // the instant posed, when the request asked for one
     glm::vec3 eye{0.0f};  // the orbited camera's
     double frame_ms = 0;   // render() alone (RenderStats::ms_total): the X-Frame-Ms header
     double encode_ms = 0;  // the PNG encoding after it

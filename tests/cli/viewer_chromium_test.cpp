@@ -1,6 +1,6 @@
 // `raster view` in headless Chromium (Debian `chromium`, installed by .ci/install): the page, opened with
 // ?selftest=1, clicks #shading-flat, drags the image and turns the wheel over it as DOM events through the handlers
-// a user's input runs. The test does not take the page's word for it: it checks the frames the server logged, with
+// a user's input runs, and for an animated scene moves the time slider and plays and pauses. The test does not take the page's word for it: it checks the frames the server logged, with
 // their parameters and PNG hashes, that the page showed exactly those bytes, and that the log's hashes are of the
 // bytes the server sends. Skipped, saying so, when Chromium is not installed.
 #include <signal.h>
@@ -24,6 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kTeapot = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/teapot.yaml";
+const std::string kSpinningTeapot = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/spinning_teapot.yaml";
 
 // The DOM of `url` after the page's self-test: Chromium's new headless mode, 20 s of virtual time.
 std::string self_test_dom(const std::string& chromium, const fs::path& work, const std::string& url) {
@@ -71,20 +72,34 @@ const nlohmann::json* find_frame(const nlohmann::json& frames, size_t after,
     return nullptr;
 }
 
+// The page's self-test run against a viewer of `scene`: the page's DOM and report, the server's log of frames.
+struct SelfTestRun {
+    TempDir dir;
+    RunningViewer viewer;
+    std::string dom;
+    nlohmann::json report, log;
+};
+
+void run_self_test(const std::string& chromium, const std::string& scene, SelfTestRun& run) {
+    run.viewer = start_viewer(scene, run.dir / "viewer.err");
+    ASSERT_GT(run.viewer.port, 0) << run.viewer.first_line << "\n" << run.viewer.log();
+    run.dom = self_test_dom(chromium, run.dir.path(), run.viewer.url() + "?selftest=1");
+    const std::string report_text = element_text(run.dom, "<pre id=\"selftest\"");
+    ASSERT_FALSE(report_text.empty()) << "the self-test wrote no report\n" << run.dom.substr(0, 3000);
+    run.report = nlohmann::json::parse(report_text);
+    run.log = nlohmann::json::parse(run.viewer.client().Get("/log")->body);
+}
+
 TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSends) {
     const std::string chromium = find_chromium();
     if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (bash .ci/install installs it)";
-    TempDir dir;
-    RunningViewer viewer = start_viewer(kTeapot, dir / "viewer.err");
-    ASSERT_GT(viewer.port, 0) << viewer.first_line << "\n" << viewer.log();
-
-    const std::string dom = self_test_dom(chromium, dir.path(), viewer.url() + "?selftest=1");
-    const std::string report_text = element_text(dom, "<pre id=\"selftest\"");
-    ASSERT_FALSE(report_text.empty()) << "the self-test wrote no report\n" << dom.substr(0, 3000);
-    const nlohmann::json report = nlohmann::json::parse(report_text);
-    const nlohmann::json log = nlohmann::json::parse(viewer.client().Get("/log")->body);
-    const nlohmann::json& frames = log["frames"];
-    SCOPED_TRACE("page report: " + report.dump() + "\nserver log: " + log.dump());
+    SelfTestRun run;
+    ASSERT_NO_FATAL_FAILURE(run_self_test(chromium, kTeapot, run));
+    const std::string& dom = run.dom;
+    const nlohmann::json& report = run.report;
+    RunningViewer& viewer = run.viewer;
+    const nlohmann::json& frames = run.log["frames"];
+    SCOPED_TRACE("page report: " + report.dump() + "\nserver log: " + run.log.dump());
 
     // The server's side. The first frame is the scene's own.
     ASSERT_GE(frames.size(), 1u);
@@ -135,6 +150,43 @@ TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSe
     EXPECT_EQ(report["pass"], true);
     EXPECT_NE(dom.find("data-selftest=\"pass\""), std::string::npos);
     EXPECT_EQ(viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << viewer.log();
+}
+
+TEST(ViewerInChromium, theTimeSliderAndPlayPoseAnAnimatedSceneAtTheInstantsTheyAskFor) {
+    const std::string chromium = find_chromium();
+    if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (bash .ci/install installs it)";
+    SelfTestRun run;
+    ASSERT_NO_FATAL_FAILURE(run_self_test(chromium, kSpinningTeapot, run));
+    const nlohmann::json& frames = run.log["frames"];
+    SCOPED_TRACE("page report: " + run.report.dump() + "\nserver log: " + run.log.dump());
+    const nlohmann::json state = nlohmann::json::parse(run.viewer.client().Get("/state")->body);
+    ASSERT_TRUE(state["animation"].is_object());
+    const double middle = (state["animation"]["start"].get<double>() + state["animation"]["end"].get<double>()) / 2;
+    // Before the slider moved, no frame asked for an instant; the slider's frame asked for the middle key span's.
+    ASSERT_GE(frames.size(), 1u);
+    EXPECT_TRUE(frames[0]["time"].is_null());
+    const nlohmann::json* scrubbed = find_frame(frames, 0, [](const nlohmann::json& f) { return !f["time"].is_null(); });
+    ASSERT_NE(scrubbed, nullptr) << "no frame asked for an instant";
+    EXPECT_NEAR((*scrubbed)["time"].get<double>(), middle, 0.01);
+    EXPECT_NE((*scrubbed)["png_fnv1a64"], frames[(*scrubbed)["index"].get<size_t>() - 1]["png_fnv1a64"]);
+    // Playing asked for a new instant each frame (later, or wrapped past the last key to the first), another image.
+    std::vector<const nlohmann::json*> played;
+    for (size_t i = (*scrubbed)["index"].get<size_t>() + 1; i < frames.size(); ++i) played.push_back(&frames[i]);
+    ASSERT_GE(played.size(), 3u);
+    for (size_t i = 1; i < played.size(); ++i) {
+        EXPECT_NE((*played[i])["time"].get<double>(), (*played[i - 1])["time"].get<double>()) << i;
+        EXPECT_NE((*played[i])["png_fnv1a64"], (*played[i - 1])["png_fnv1a64"]) << i;
+    }
+    // The server poses the instant asked for: the same request again gives the same bytes, another instant others.
+    const nlohmann::json& shown = run.report["steps"][4]["frame"];
+    ASSERT_EQ(run.report["steps"][4]["name"], "time slider");
+    EXPECT_EQ(shown["hash"], (*scrubbed)["png_fnv1a64"]);
+    nlohmann::json params = shown["params"];
+    const httplib::Result again = run.viewer.client().Get(("/render?" + query_of(params)).c_str());
+    ASSERT_TRUE(again);
+    EXPECT_EQ(fnv1a_hex(again->body), (*scrubbed)["png_fnv1a64"]);
+    EXPECT_EQ(run.report["pass"], true);
+    EXPECT_EQ(run.viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << run.viewer.log();
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ TEST(ViewerRequests, unknownNamesAndValuesAreRefusedByName) {
               "filter must be nearest, bilinear, trilinear or anisotropic, got 'cubic'");
     EXPECT_EQ(error_of({{"msaa", "true"}}), "msaa must be 0 or 1, got 'true'");
     EXPECT_EQ(error_of({{"zoom", "2"}}),
-              "unknown parameter 'zoom' (known: distance, filter, msaa, pitch, samples, shading, yaw)");
+              "unknown parameter 'zoom' (known: distance, filter, msaa, pitch, samples, shading, time, yaw)");
     EXPECT_EQ(error_of({{"yaw", "1"}, {"yaw", "2"}}), "parameter 'yaw' is given more than once");
 }
 
@@ -78,6 +78,16 @@ TEST(ViewerRequests, anglesAndDistanceMustBeFiniteNumbersInRange) {
     EXPECT_EQ(error_of({{"distance", "-1"}}),
               "distance must be in [0.05, 20] (times the scene's eye-target distance), got '-1'");
     EXPECT_EQ(error_of({{"distance", "nan"}}), "distance must be a finite number, got 'nan'");
+}
+
+TEST(ViewerRequests, aTimeIsAFiniteNumberOfSecondsWithinAMillion) {
+    EXPECT_FALSE(parse_view_request({}).request.time);
+    const ParsedViewRequest parsed = parse_view_request({{"time", "1.25"}});
+    EXPECT_EQ(parsed.error, "");
+    EXPECT_EQ(parsed.request.time, std::optional<double>(1.25));
+    EXPECT_EQ(error_of({{"time", "-1000000"}}), "");
+    EXPECT_EQ(error_of({{"time", "inf"}}), "time must be a finite number, got 'inf'");
+    EXPECT_EQ(error_of({{"time", "2e6"}}), "time must be in [-1e+06, 1e+06] seconds, got '2e6'");
 }
 
 TEST(ViewerRequests, whatWasSentIsQuotedShortAndPrintable) {

@@ -8,6 +8,7 @@
 #include "raster/compat/scene_loader.h"
 #include "raster/image/image.h"
 #include "raster/frame/render.h"
+#include "raster/transform/scene_pose.h"
 
 namespace raster::cli {
 namespace {
@@ -87,6 +88,28 @@ TEST(ViewerSession, aFrameTheSceneCannotHaveIsRefused) {
     two_samples.samples = 4;
     EXPECT_NO_THROW(session.render(two_samples));
     EXPECT_EQ(session.log()["frames_served"], 1);  // the refused one is not a frame
+}
+
+TEST(ViewerSession, aTimePosesTheAnimatedSceneAsRenderTimeDoesAndAStaticSceneRefusesIt) {
+    const std::string spinning = kScenes + "spinning_teapot.yaml";
+    ViewerSession session(load_scene(spinning), frame_options());
+    for (const float time : {0.3f, 1.25f}) {
+        Scene posed = load_scene(spinning);
+        pose_scene(posed, time);
+        const std::vector<uint8_t> rendered = encode_image(render(posed, frame_options()).image, ImageFormat::png);
+        ViewRequest at;
+        at.time = time;
+        const ViewerFrame frame = session.render(at);
+        EXPECT_TRUE(frame.png == std::string(rendered.begin(), rendered.end())) << time;
+        EXPECT_EQ(frame.record.time, std::optional<double>(time));
+    }
+    EXPECT_TRUE(session.state()["animation"].is_object());
+    EXPECT_EQ(session.state()["animation"]["end"], 2.0);
+    ViewerSession still(load_scene(kScenes + "teapot.yaml"), frame_options());
+    ViewRequest at;
+    at.time = 1.0;
+    EXPECT_THROW(still.render(at), ViewRequestError);
+    EXPECT_TRUE(still.state()["animation"].is_null());
 }
 
 TEST(ViewerSession, theFilterReachesEveryTexturedMaterial) {
