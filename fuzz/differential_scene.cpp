@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -11,6 +14,9 @@
 #include "oracle/reference/reference_geometry.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/core/errors.h"
+#include "raster/image/image.h"
+#include "raster/texture/mip_chains.h"
+#include "raster/texture/texture.h"
 #include "raster/transform/camera_matrices.h"
 #include "raster/scene/validation.h"
 
@@ -110,6 +116,39 @@ void draw_light_types(FuzzedDataProvider& input, Scene& scene) {
     }
 }
 
+// A texture whose alpha every mesh's material reads: a w x h RGBA image (1 to 4 texels a side) from the input, as a
+// PNG (decoded by raster and, on its own, by the oracle), each triangle's corners' texture coordinates in [-2, 2],
+// the filter (nearest, bilinear or trilinear) and wrap, and each material's opacity and cut-out or none.
+void draw_alpha_texture(FuzzedDataProvider& input, Scene& scene) {
+    Image image(input.ConsumeIntegralInRange(1, 4), input.ConsumeIntegralInRange(1, 4), 4);
+    for (uint8_t& byte : image.pixels) byte = input.ConsumeIntegral<uint8_t>();
+    const std::vector<uint8_t> png = encode_image(image, ImageFormat::png, 1);
+    TextureBinding binding;
+    binding.path = "fuzzed.png";
+    binding.encoded = std::make_shared<const std::string>(png.begin(), png.end());
+    binding.texture = std::make_shared<const Texture>(decode_texture(*binding.encoded, binding.path));
+    binding.alpha_texture =
+        std::make_shared<const Texture>(decode_texture(*binding.encoded, binding.path, TextureChannels::alpha));
+    binding.reads_alpha = true;
+    constexpr TextureFilter kFilters[] = {TextureFilter::nearest, TextureFilter::bilinear, TextureFilter::trilinear};
+    constexpr TextureWrap kWraps[] = {TextureWrap::repeat, TextureWrap::clamp, TextureWrap::mirror};
+    binding.filter = input.PickValueInArray(kFilters);
+    binding.wrap = input.PickValueInArray(kWraps);
+    for (SceneMesh& mesh : scene.meshes) {
+        MeshData& data = mutable_data(mesh);
+        data.corner_uvs.resize(data.triangles.size());
+        for (TriangleUvs& corners : data.corner_uvs)
+            for (glm::vec2& uv : corners.uv)
+                uv = {input.ConsumeFloatingPointInRange(-2.0f, 2.0f), input.ConsumeFloatingPointInRange(-2.0f, 2.0f)};
+        for_each_material(mesh, [&](Material& material) {
+            material.texture = binding;
+            material.opacity = input.ConsumeFloatingPointInRange(0.0f, 1.0f);
+            if (input.ConsumeBool()) material.alpha_cutoff = input.ConsumeFloatingPointInRange(0.0f, 1.0f);
+        });
+    }
+    build_needed_mip_chains(scene);
+}
+
 // Every triangle's radius is under kMaxExtremeRadius (the oracle's own reference geometry, as it compares with).
 bool bounds_say_something(const Scene& scene) {
     const oracle::ReferenceGeometry reference(scene, oracle::oracle_scene(scene));
@@ -142,6 +181,7 @@ std::optional<DifferentialCase> differential_case(const uint8_t* data, size_t si
     // Drawn after everything else, so that the inputs saved before orthographic cameras existed keep their scenes.
     if (input.ConsumeBool()) draw_orthographic(input, scene);
     if (input.ConsumeBool()) draw_light_types(input, scene);
+    if (input.ConsumeBool()) draw_alpha_texture(input, scene);
     const RenderSettings& settings = scene.settings;
     if (uint64_t(settings.width) * uint64_t(settings.height) * uint64_t(settings.samples) > kMaxFrameSamples)
         return std::nullopt;

@@ -156,10 +156,30 @@ std::string describe_scene(const Scene& scene) {
         text += "\n";
     }
     for (const SceneMesh& mesh : scene.meshes) {
-        text += "  mesh '" + mesh.source + "':\n";
-        for (const TriangleIndices& t : mesh.data->triangles)
+        const Material& m = mesh.material;
+        std::snprintf(line, sizeof line, "  mesh '%s': opacity %a", mesh.source.c_str(), double(m.opacity));
+        text += line;
+        if (m.alpha_cutoff) {
+            std::snprintf(line, sizeof line, ", cut-off %a", double(*m.alpha_cutoff));
+            text += line;
+        }
+        if (m.texture) {
+            std::snprintf(line, sizeof line, ", texture %s %s %s%s", m.texture->path.c_str(), to_string(m.texture->filter),
+                          to_string(m.texture->wrap), m.texture->reads_alpha ? " with alpha" : "");
+            text += line;
+        }
+        text += "\n";
+        for (size_t i = 0; i < mesh.data->triangles.size(); ++i) {
+            const TriangleIndices& t = mesh.data->triangles[i];
             text += "    " + vec(mesh.data->positions[t.v[0]]) + " " + vec(mesh.data->positions[t.v[1]]) + " " +
-                    vec(mesh.data->positions[t.v[2]]) + "\n";
+                    vec(mesh.data->positions[t.v[2]]);
+            if (i < mesh.data->corner_uvs.size())
+                for (const glm::vec2& uv : mesh.data->corner_uvs[i].uv) {
+                    std::snprintf(line, sizeof line, " (%a, %a)", double(uv.x), double(uv.y));
+                    text += line;
+                }
+            text += "\n";
+        }
     }
     return text;
 }

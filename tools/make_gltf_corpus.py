@@ -11,13 +11,18 @@
 - strip_fan_colors.gltf: a buffer in a data URI; a triangle strip with normalized unsigned-byte RGBA colours, a
   triangle fan with float RGB colours and a BLEND material, a line primitive (skipped); a camera without zfar;
 - animated_box.gltf: a box turned by LINEAR rotation keys, moved by CUBICSPLINE translation keys and squashed by STEP
-  scale keys; no light, so raster lights it.
+  scale keys; no light, so raster lights it;
+- alpha_cutouts.gltf: texture alpha. A leaf-shaped cut-out (MASK, cut-off 0.5, an RGBA texture whose alpha is 0
+  outside the leaf, 255 inside and graded across a two-texel rim) swinging on LINEAR rotation keys, a pane whose alpha
+  runs from 0.15 to 0.9 across it (BLEND, base colour factor alpha 0.8) in front of it, an opaque back wall and
+  floor; images in data URIs, trilinear filtering, a camera and a point light.
 """
 import base64
 import json
 import math
 import os
 import struct
+import zlib
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "corpus", "gltf")
@@ -234,6 +239,83 @@ def animated_box():
     })
 
 
+def png_rgba(width, height, texel):
+    """An 8-bit RGBA PNG whose texel (x, y) (row 0 the top) is texel(x, y), a 4-tuple of 0..255."""
+    rows = b"".join(b"\0" + bytes(c for x in range(width) for c in texel(x, y)) for y in range(height))
+    chunk = lambda kind, data: (struct.pack(">I", len(data)) + kind + data +
+                                struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF))
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)) +
+            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+
+
+def leaf_texel(x, y, size=64):
+    """A leaf: inside |u|^1.5 + |v|^1.5 < 1 about the texture's middle, a rim two texels wide graded in alpha; a vein."""
+    u, v = (x + 0.5) / size * 2 - 1, (y + 0.5) / size * 2 - 1
+    lean = (u - 0.25 * v) * 1.6
+    inside = 1 - (abs(lean) ** 1.5 + abs(v * 1.05) ** 1.5)
+    alpha = max(0, min(255, round(255 * inside * size / 4)))
+    vein = abs(lean) < 0.06
+    return (150 if vein else 40 + x, 90 if vein else 120 + y, 30, alpha)
+
+
+def pane_texel(x, y, size=32):
+    """Alpha from 0.15 at the left to 0.9 at the right; blue, with a lighter stripe every 8 rows."""
+    alpha = round(255 * (0.15 + 0.75 * x / (size - 1)))
+    light = (y // 4) % 2 == 0
+    return (90 if light else 40, 140 if light else 90, 230, alpha)
+
+
+def alpha_cutouts():
+    buffer = Buffer()
+    quad = lambda w, h: buffer.accessor("f", [[-w, -h, 0], [w, -h, 0], [w, h, 0], [-w, h, 0]], FLOAT, "VEC3", bounds=True)
+    normal = buffer.accessor("f", [[0, 0, 1]] * 4, FLOAT, "VEC3")
+    uv = buffer.accessor("f", [[0, 1], [1, 1], [1, 0], [0, 0]], FLOAT, "VEC2")  # glTF's v runs down the image
+    indices = buffer.accessor("B", [0, 1, 2, 0, 2, 3], UBYTE, "SCALAR")
+    leaf_quad, pane_quad, wall_quad = quad(1, 1), quad(0.9, 0.7), quad(3, 2)
+    box_attributes, box_indices = box(buffer)
+    swing_in = buffer.accessor("f", [0, 1, 2], FLOAT, "SCALAR")
+    swing_out = buffer.accessor("f", [quaternion([0, 1, 0], a) for a in (-35, 10, 40)], FLOAT, "VEC4")
+    image = lambda png: {"uri": "data:image/png;base64," + base64.b64encode(png).decode()}
+    material = lambda name, colour, **more: dict({"name": name, "pbrMetallicRoughness": dict(
+        {"baseColorFactor": colour, "metallicFactor": 0, "roughnessFactor": 0.6}, **more.pop("pbr", {}))}, **more)
+    primitive = lambda attributes, mat: {"primitives": [{"attributes": attributes, "indices": indices, "material": mat}]}
+    write_json("alpha_cutouts.gltf", {
+        "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "color": [1, 1, 0.95], "intensity": 30}]}},
+        "scenes": [{"nodes": [0, 1, 2, 3, 4, 5]}],
+        "nodes": [
+            {"name": "leaf", "mesh": 0, "translation": [-0.4, 0.2, 0.3], "rotation": quaternion([0, 1, 0], -35)},
+            {"name": "pane", "mesh": 1, "translation": [0.6, 0.1, 1.2]},
+            {"name": "wall", "mesh": 2, "translation": [0, 0.5, -1.5]},
+            {"name": "floor", "mesh": 3, "translation": [0, -1.3, 0], "scale": [6, 0.2, 4]},
+            {"name": "camera", "camera": 0, "translation": [0.3, 0.6, 5.5], "rotation": quaternion([1, 0, 0], -6)},
+            {"name": "lamp", "translation": [1.5, 3, 4], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        ],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.75, "znear": 0.5, "zfar": 30, "aspectRatio": 1.5}}],
+        "meshes": [
+            primitive({"POSITION": leaf_quad, "NORMAL": normal, "TEXCOORD_0": uv}, 0),
+            primitive({"POSITION": pane_quad, "NORMAL": normal, "TEXCOORD_0": uv}, 1),
+            primitive({"POSITION": wall_quad, "NORMAL": normal}, 2),
+            {"primitives": [{"attributes": box_attributes, "indices": box_indices, "material": 3}]},
+        ],
+        "materials": [
+            material("leaf", [1, 1, 1, 1], pbr={"baseColorTexture": {"index": 0}}, alphaMode="MASK", alphaCutoff=0.5),
+            material("pane", [1, 1, 1, 0.8], pbr={"baseColorTexture": {"index": 1}}, alphaMode="BLEND"),
+            material("wall", [0.75, 0.7, 0.6, 1]),
+            material("floor", [0.45, 0.5, 0.45, 1]),
+        ],
+        "textures": [{"source": 0}, {"source": 1}],
+        "images": [image(png_rgba(64, 64, leaf_texel)), image(png_rgba(32, 32, pane_texel))],
+        "animations": [{"name": "swing", "channels": [{"sampler": 0, "target": {"node": 0, "path": "rotation"}}],
+                        "samplers": [{"input": swing_in, "output": swing_out, "interpolation": "LINEAR"}]}],
+        "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(buffer.data).decode(),
+                     "byteLength": len(buffer.data)}],
+        "bufferViews": buffer.views,
+        "accessors": buffer.accessors,
+    })
+
+
 if __name__ == "__main__":
     os.makedirs(OUT, exist_ok=True)
     instanced_boxes()
@@ -241,3 +323,4 @@ if __name__ == "__main__":
     textured_quad()
     strip_fan_colors()
     animated_box()
+    alpha_cutouts()

@@ -37,11 +37,13 @@ const ExcuseCaps kFrameCaps = [] {
 // whose sides are the frame's (about 0.75 px of edge per pixel), lenses at their extremes, and extreme coordinates
 // whose radius may reach a pixel (differential_scene.cpp's kMaxExtremeRadius): the bands are about ten times the
 // corpus's share, so 1% of samples and 10% of pixels per class; extreme lenses and slivers make steep colours,
-// so wide intervals may take a fifth of the pixels.
+// so wide intervals may take a fifth of the pixels. The transparent layers' bands run along the same random
+// triangles' edges (every mesh becomes a layer when the target draws texture alpha), so they scale alike: 10%.
 const ExcuseCaps kFuzzCorpusCaps = [] {
     ExcuseCaps caps = kFrameCaps;
     caps.sample_share = 10 * kFrameSampleShare;
     caps.pixel_share = 10 * kFramePixelShare;
+    caps.layers_open = 10 * kFrameLayerShare;
     caps.wide_interval = 2 * kFrameWideShare;
     return caps;
 }();

@@ -165,7 +165,7 @@ oracle::PixelBounds colour_bounds(const Scene& scene, const ComparisonOptions& o
         layer_inputs.oracle = &out.oracle_visibility;
         layer_inputs.reference = &reference;
         for (uint32_t id = 0; id < run.geometry.triangles.size(); ++id)  // culled ones too: their facing may be uncertain
-            if (oracle::triangle_material(scene, run.geometry.triangles[id]).opacity < 1.0f)
+            if (oracle::layered_material(oracle::triangle_material(scene, run.geometry.triangles[id])))
                 layer_inputs.transparent.push_back(id);
         layer_inputs.offsets = offsets;
         layer_inputs.threads = options.threads;

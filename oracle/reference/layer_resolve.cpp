@@ -11,23 +11,34 @@
 namespace raster::oracle {
 namespace {
 
-// MSAA: each triangle shaded once, at the first sample that shows it.
+// A layer's colour and opacity boxes.
+struct ShadedLayer {
+    Interval3 colour;
+    Interval opacity;
+};
+
+// MSAA: each triangle shaded once, colour and opacity, at the first sample that shows it.
 class ShadeOnce {
 public:
     ShadeOnce(const OracleShader& shader, bool msaa, ShadowTally* tally) : shader_(shader), msaa_(msaa), tally_(tally) {}
-    Interval3 shade(const ResolveSample& sample) {
-        if (!msaa_) return shader_.shade(sample.triangle, sample.bary, tally_);
-        for (const auto& [id, colour] : shaded_)
-            if (id == sample.triangle) return colour;
-        shaded_.emplace_back(sample.triangle, shader_.shade(sample.triangle, sample.bary, tally_));
+    Interval3 shade(const ResolveSample& sample) { return layer(sample).colour; }
+    ShadedLayer layer(const ResolveSample& sample) {
+        if (!msaa_) return fresh(sample);
+        for (const auto& [id, shaded] : shaded_)
+            if (id == sample.triangle) return shaded;
+        shaded_.emplace_back(sample.triangle, fresh(sample));
         return shaded_.back().second;
     }
 
 private:
+    ShadedLayer fresh(const ResolveSample& sample) const {
+        return {shader_.shade(sample.triangle, sample.bary, tally_), shader_.opacity(sample.triangle, sample.bary)};
+    }
+
     const OracleShader& shader_;
     bool msaa_;
     ShadowTally* tally_;
-    std::vector<std::pair<uint32_t, Interval3>> shaded_;
+    std::vector<std::pair<uint32_t, ShadedLayer>> shaded_;
 };
 
 struct SampleBlend {
@@ -35,22 +46,29 @@ struct SampleBlend {
     Interval alpha;
 };
 
-SampleBlend blend(const OracleShader& shader, TransparencyMode mode, const LayeredSample& sample, ShadeOnce& shade) {
+SampleBlend blend(TransparencyMode mode, const LayeredSample& sample, ShadeOnce& shade) {
     Interval3 colour(glm::dvec3(0.0)), weighted(glm::dvec3(0.0));
-    Interval transmittance(1.0);
-    double alpha_sum = 0.0, largest = 0.0;
+    Interval3 hull(glm::dvec3(0.0));  // holds every layer colour, and 0
+    Interval transmittance(1.0), alpha_sum(0.0);
+    double largest = 0.0;
     for (const ResolveSample& layer : sample.layers) {
-        const double a = shader.opacity(layer.triangle);
-        const Interval3 c = shade.shade(layer);
+        const ShadedLayer shaded = shade.layer(layer);
+        const Interval a = shaded.opacity;
+        const Interval3& c = shaded.colour;
         largest = std::max(largest, c.magnitude());
-        colour = colour + (transmittance * Interval(a)) * c;
-        weighted = weighted + Interval(a) * c;
-        alpha_sum += a;
-        transmittance = transmittance * Interval(1.0 - a);
+        colour = colour + (transmittance * a) * c;
+        weighted = weighted + a * c;
+        for (int k = 0; k < 3; ++k) hull[k] = {std::min(hull[k].lo, c[k].lo), std::max(hull[k].hi, c[k].hi)};
+        alpha_sum = alpha_sum + a;
+        transmittance = transmittance * (Interval(1.0) - a);
     }
-    if (mode == TransparencyMode::weighted)
-        colour = alpha_sum > 0.0 ? (Interval(1.0) - transmittance) * (Interval(1.0) / Interval(alpha_sum) * weighted)
-                                 : Interval3(glm::dvec3(0.0));
+    if (mode == TransparencyMode::weighted) {
+        // The weighted mean of the layer colours; where the weights may all be 0 raster writes none, and the mean
+        // is within the colours' hull anyway.
+        if (alpha_sum.hi <= 0.0) colour = Interval3(glm::dvec3(0.0));
+        else if (alpha_sum.lo > 0.0) colour = (Interval(1.0) - transmittance) * (Interval(1.0) / alpha_sum * weighted);
+        else colour = (Interval(1.0) - transmittance) * hull;
+    }
     SampleBlend out{colour, Interval(1.0) - transmittance};
     if (sample.opaque.triangle != kNoTriangle) {
         const Interval3 c = shade.shade(sample.opaque);
@@ -63,7 +81,7 @@ SampleBlend blend(const OracleShader& shader, TransparencyMode mode, const Layer
     for (int c = 0; c < 3; ++c) out.colour[c] = out.colour[c].widened(error);
     // With every layer's opacity 0 (and no opaque surface) raster's transmittance is exactly 1 and its alpha
     // exactly 0: no widening, so that the RGBA ratio below stays decided.
-    if (sample.opaque.triangle != kNoTriangle || alpha_sum > 0.0) out.alpha = out.alpha.widened(float_gamma(2 * n + 1));
+    if (sample.opaque.triangle != kNoTriangle || alpha_sum.hi > 0.0) out.alpha = out.alpha.widened(float_gamma(2 * n + 1));
     return out;
 }
 
@@ -77,7 +95,7 @@ PixelColour resolve_layered_pixel(const OracleShader& shader, const ResolveSetti
     Interval alpha_sum(0.0);
     double magnitude_sum = 0.0;
     for (int s = 0; s < count; ++s) {
-        const SampleBlend b = blend(shader, mode, samples[s], shade);
+        const SampleBlend b = blend(mode, samples[s], shade);
         Interval3 term = b.colour;
         if (!settings.alpha)  // C + (1 - alpha) background
             for (int c = 0; c < 3; ++c) term[c] = term[c] + (Interval(1.0) - b.alpha) * Interval(settings.background[c]);

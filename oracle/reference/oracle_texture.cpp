@@ -30,14 +30,14 @@ double overlap(double a, double b, double c) { return std::max(0.0, std::min(b, 
 
 }  // namespace
 
-OracleTexture load_oracle_texture(const std::string& path) {
+OracleTexture load_oracle_texture(const std::string& path, OracleChannels channels) {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw std::runtime_error("oracle: cannot open texture " + path);
     const std::string encoded((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    return decode_oracle_texture(encoded, path);
+    return decode_oracle_texture(encoded, path, channels);
 }
 
-OracleTexture decode_oracle_texture(const std::string& encoded, const std::string& path) {
+OracleTexture decode_oracle_texture(const std::string& encoded, const std::string& path, OracleChannels which) {
     OracleTexture texture;
     texture.path = path;
     OracleTextureLevel level;
@@ -63,10 +63,12 @@ OracleTexture decode_oracle_texture(const std::string& encoded, const std::strin
         stbi_image_free(pixels);
     }
     if (values.empty()) throw std::runtime_error("oracle: cannot decode texture " + path);
-    // Grey (and grey + alpha) is grey in every channel; alpha is not read.
+    // Grey (and grey + alpha) is grey in every channel; alpha, when asked for, is the last of 2 or 4 channels.
+    const bool has_alpha = channels == 2 || channels == 4;
     for (size_t i = 0; i < values.size(); i += channels) {
         const double r = values[i];
-        level.texels.push_back(channels < 3 ? glm::dvec3(r) : glm::dvec3(r, values[i + 1], values[i + 2]));
+        if (which == OracleChannels::alpha) level.texels.push_back(glm::dvec3(has_alpha ? values[i + channels - 1] : 1.0));
+        else level.texels.push_back(channels < 3 ? glm::dvec3(r) : glm::dvec3(r, values[i + 1], values[i + 2]));
     }
     find_range(level);
     texture.levels.push_back(std::move(level));
@@ -104,11 +106,15 @@ OracleTextures::OracleTextures(const Scene& scene) {
     for (const SceneMesh& mesh : scene.meshes) {
         for_each_material(mesh, [&](const Material& material) {
             if (!material.texture) return;
-            auto& slot = by_path_[material.texture->path];
-            if (slot) return;
             const TextureBinding& binding = *material.texture;
-            slot = std::make_shared<const OracleTexture>(binding.encoded ? decode_oracle_texture(*binding.encoded, binding.path)
-                                                                         : load_oracle_texture(binding.path));
+            auto decode_into = [&](std::shared_ptr<const OracleTexture>& slot, OracleChannels channels) {
+                if (slot) return;
+                slot = std::make_shared<const OracleTexture>(binding.encoded
+                                                                 ? decode_oracle_texture(*binding.encoded, binding.path, channels)
+                                                                 : load_oracle_texture(binding.path, channels));
+            };
+            decode_into(by_path_[binding.path], OracleChannels::colour);
+            if (binding.reads_alpha) decode_into(alpha_by_path_[binding.path], OracleChannels::alpha);
         });
     }
 }

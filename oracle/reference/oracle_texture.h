@@ -30,23 +30,31 @@ struct OracleTexture {
     std::vector<OracleTextureLevel> levels;
 };
 
+// What an oracle texture holds of its image: the colour (grey replicated), or the alpha channel in all three
+// components, code / full scale (1 where the image has no alpha).
+enum class OracleChannels { colour, alpha };
+
 // Decodes `path` (throws std::runtime_error when it cannot; raster loaded it, so that is a broken file system).
-OracleTexture load_oracle_texture(const std::string& path);
+OracleTexture load_oracle_texture(const std::string& path, OracleChannels channels = OracleChannels::colour);
 // Decodes an image's encoded bytes (a texture embedded in its scene file); `path` names it.
-OracleTexture decode_oracle_texture(const std::string& encoded, const std::string& path);
+OracleTexture decode_oracle_texture(const std::string& encoded, const std::string& path,
+                                    OracleChannels channels = OracleChannels::colour);
 
 // The level below `level`, by the rule above.
 OracleTextureLevel next_oracle_level(const OracleTextureLevel& level);
 
-// The scene's textures, one per distinct image file, for the materials that have one.
+// The scene's textures, one per distinct image file, for the materials that have one; the alpha of those whose
+// binding reads it, likewise.
 class OracleTextures {
 public:
     explicit OracleTextures(const Scene& scene);
     // The texture of a textured binding.
     const OracleTexture& of(const TextureBinding& binding) const { return *by_path_.at(binding.path); }
+    // The alpha texture of a binding that reads alpha.
+    const OracleTexture& alpha_of(const TextureBinding& binding) const { return *alpha_by_path_.at(binding.path); }
 
 private:
-    std::map<std::string, std::shared_ptr<const OracleTexture>> by_path_;
+    std::map<std::string, std::shared_ptr<const OracleTexture>> by_path_, alpha_by_path_;
 };
 
 }  // namespace raster::oracle

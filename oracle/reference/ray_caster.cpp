@@ -34,7 +34,7 @@ std::vector<uint32_t> traced_triangles(const Scene& scene, const OracleScene& ge
     out.reserve(geometry.triangles.size());
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id) {
         const auto& v = geometry.triangles[id].vertex;
-        const bool transparent = triangle_material(scene, geometry.triangles[id]).opacity < 1.0f;
+        const bool transparent = layered_material(triangle_material(scene, geometry.triangles[id]));
         if (transparent != (surfaces == Surfaces::transparent)) continue;
         if (!finite(glm::vec3(geometry.view[v[0]])) || !finite(glm::vec3(geometry.view[v[1]])) ||
             !finite(glm::vec3(geometry.view[v[2]])))

@@ -30,7 +30,7 @@ struct OracleStats {
 };
 
 // Which surfaces a caster traces: the opaque ones (render_oracle: what the depth test keeps) or the transparent
-// ones (layer_caster.h: every hit along the ray), by each triangle's material opacity as the oracle reads it.
+// ones (layer_caster.h: every hit along the ray), by each triangle's material as the oracle reads it (layered_material).
 enum class Surfaces { opaque, transparent };
 
 // The scene triangles a caster hands Embree: those of `surfaces`, with finite view-space vertices and, when the

@@ -51,6 +51,10 @@ void mesh_normals(const SceneMesh& mesh, const ModelMatrixError& model, uint32_t
 
 }  // namespace
 
+bool layered_material(const Material& material) {
+    return !(material.opacity >= 1.0f) || (material.texture.has_value() && material.texture->reads_alpha);
+}
+
 const Material& triangle_material(const Scene& scene, const OracleTriangle& triangle) {
     const SceneMesh& mesh = scene.meshes[triangle.mesh];
     const Material* material = &mesh.material;

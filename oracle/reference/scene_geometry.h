@@ -41,6 +41,10 @@ struct OracleScene {
 // before the triangle, else the mesh's own material.
 const Material& triangle_material(const Scene& scene, const OracleTriangle& triangle);
 
+// Whether the oracle takes a material's surfaces as transparent layers (docs/transparency.md): an opacity below 1,
+// or a texture whose alpha the material reads (then each point's opacity is the shader's).
+bool layered_material(const Material& material);
+
 // Normals, as docs/conventions.md defines them: a file's normals by the inverse transpose of the model matrix, renormalised;
 // without them, the normalised mean of the unit normals of the vertex's faces in world space (degenerate faces
 // left out). Either is zero where it has no direction.

@@ -231,6 +231,18 @@ bool OracleShader::texture(uint32_t id, const Interval3& bary, Interval3& value)
     return true;
 }
 
+Interval OracleShader::opacity(uint32_t id, const Interval3& bary) const {
+    const Material& material = material_of(id);
+    if (!material.texture || !material.texture->reads_alpha || !textures_) return Interval(material.opacity);
+    Interval alpha = Interval(material.opacity) * textures_->alpha_at(id, material, bary);
+    alpha = alpha.widened(float_gamma(1) * alpha.magnitude());
+    if (!material.alpha_cutoff) return alpha;
+    const double cutoff = *material.alpha_cutoff;
+    if (alpha.lo >= cutoff) return Interval(1.0);
+    if (alpha.hi < cutoff) return Interval(0.0);
+    return Interval(0.0, 1.0);
+}
+
 Interval3 OracleShader::position_box(uint32_t vertex) const {
     const glm::dvec3& p = geometry_.world[vertex];
     const glm::dvec3& e = geometry_.world_error[vertex];

@@ -55,8 +55,10 @@ public:
     // Linear RGB of triangle `id` for every barycentric triple in `bary`, unclamped; `tally` (optional) gets the
     // shadow verdicts met.
     Interval3 shade(uint32_t id, const Interval3& bary, ShadowTally* tally = nullptr) const;
-    // The opacity of triangle `id`'s material, as the scene stores it.
-    double opacity(uint32_t id) const { return material_of(id).opacity; }
+    // Every opacity raster may compute for triangle `id` at barycentrics in `bary` (docs/transparency.md): its
+    // material's, times its texture's alpha (and the product's rounding) where the texture reads alpha; a cut-out's
+    // 1 where all of those are at least the cut-off, 0 where none is, and [0, 1] where the box straddles it.
+    Interval opacity(uint32_t id, const Interval3& bary) const;
 
 private:
     struct LitTerms {

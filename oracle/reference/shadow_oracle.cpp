@@ -32,7 +32,7 @@ ShadowOracle::ShadowOracle(const Scene& scene, const OracleScene& geometry, int 
     // Transparent surfaces cast no shadow (docs/transparency.md): only opaque triangles occlude.
     std::vector<uint8_t> casts(geometry.triangles.size(), 1);
     for (uint32_t id = 0; id < geometry.triangles.size(); ++id)
-        casts[id] = triangle_material(scene, geometry.triangles[id]).opacity >= 1.0f;
+        casts[id] = !layered_material(triangle_material(scene, geometry.triangles[id]));
     for (size_t light = 0; light < scene.lights.size(); ++light) {
         if (!scene.lights[light].shadows) continue;
         index_of_light_[light] = static_cast<int>(indices_.size());

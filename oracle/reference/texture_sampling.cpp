@@ -82,6 +82,16 @@ Interval over_box(const Interval3& bary, double c0, double c1, double c2, bool r
 }  // namespace
 
 Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const Interval3& bary) const {
+    const SamplerState sampler = sampler_of(*material.texture, filter_override_);
+    return filtered_over(textures_.of(*material.texture), sampler, footprint(id, sampler, bary));
+}
+
+Interval OracleTextureSampling::alpha_at(uint32_t id, const Material& material, const Interval3& bary) const {
+    const SamplerState sampler = sampler_of(*material.texture, filter_override_);
+    return filtered_over(textures_.alpha_of(*material.texture), sampler, footprint(id, sampler, bary)).x;
+}
+
+TextureFootprintBox OracleTextureSampling::footprint(uint32_t id, const SamplerState& sampler, const Interval3& bary) const {
     const Triangle& t = triangles_[id];
     glm::dvec3 middle, half;
     for (int i = 0; i < 3; ++i) {
@@ -103,7 +113,6 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
     // anisotropic filtering the relative form is not used yet: on checker_floor's horizon it leaves raster one level
     // outside the taps' interval on 705 pixels, a disagreement the wider box hides and that is still to be explained
     // (the model's or raster's); docs/oracle.md, "The texture interval", says so.
-    const SamplerState sampler = sampler_of(*material.texture, filter_override_);
     const bool relative_too = sampler.filter != TextureFilter::anisotropic;
     const Interval u = over_box(bary, t.uv[0].x, t.uv[1].x, t.uv[2].x, relative_too);
     const Interval v = over_box(bary, t.uv[0].y, t.uv[1].y, t.uv[2].y, relative_too);
@@ -128,7 +137,7 @@ Interval3 OracleTextureSampling::at(uint32_t id, const Material& material, const
     };
     if (!finite_box(box.d_dx) || !finite_box(box.d_dy))
         box.d_dx = box.d_dy = {Interval::everything(), Interval::everything()};
-    return filtered_over(textures_.of(*material.texture), sampler, box);
+    return box;
 }
 
 }  // namespace raster::oracle

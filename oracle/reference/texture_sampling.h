@@ -13,6 +13,7 @@
 #include "oracle/reference/interval.h"
 #include "oracle/reference/oracle_texture.h"
 #include "oracle/reference/scene_geometry.h"
+#include "oracle/reference/texture_filters.h"
 #include "oracle/reference/texture_precision.h"
 #include "raster/scene/scene.h"
 
@@ -38,8 +39,13 @@ public:
     // The box of values `material`'s texture may give for triangle `id` at any barycentrics in `bary`. The
     // material must be textured.
     Interval3 at(uint32_t id, const Material& material, const Interval3& bary) const;
+    // The box of alpha values likewise, for a material whose texture reads alpha.
+    Interval alpha_at(uint32_t id, const Material& material, const Interval3& bary) const;
 
 private:
+    // The texture coordinates and their derivatives over the barycentric box, raster's float error included.
+    TextureFootprintBox footprint(uint32_t id, const SamplerState& sampler, const Interval3& bary) const;
+
     struct Triangle {
         glm::dvec3 view[3];
         glm::dvec2 uv[3];

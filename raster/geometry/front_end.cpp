@@ -45,7 +45,7 @@ std::vector<uint8_t> transparent_triangles(const Scene& scene) {
     if (!has_transparency(scene)) return {};
     std::vector<uint8_t> out;
     for (const SceneMesh& mesh : scene.meshes)
-        for (uint32_t t = 0; t < mesh.data->triangles.size(); ++t) out.push_back(material_of(mesh, t).opacity < 1.0f);
+        for (uint32_t t = 0; t < mesh.data->triangles.size(); ++t) out.push_back(is_blended(material_of(mesh, t)));
     return out;
 }
 

@@ -35,7 +35,7 @@ struct SetupCounts {
     size_t rasterized = 0;  // setups made: screen triangles after clipping, fan splitting, culling and degeneracy
 };
 
-// Per scene triangle (in id order), 1 where its material's opacity is below 1; empty when no material is
+// Per scene triangle (in id order), 1 where its material is blended (is_blended); empty when no material is
 // transparent, so an opaque scene does no per-triangle work for transparency.
 std::vector<uint8_t> transparent_triangles(const Scene& scene);
 

@@ -90,7 +90,24 @@ std::optional<GltfUvTransform> GltfMaterials::read_uv_transform(const tinygltf::
     return transform;
 }
 
+std::shared_ptr<const Texture> GltfMaterials::decode(const std::string& encoded, const std::string& name,
+                                                     TextureChannels channels, int image) {
+    try {
+        auto decoded = std::make_shared<const Texture>(decode_texture(encoded, name, channels));
+        const TextureLevel& level = decoded->levels.front();
+        decoded_texels_ += static_cast<uint64_t>(level.width) * static_cast<uint64_t>(level.height);
+        if (decoded_texels_ > kMaxGltfTexels)
+            throw InputError("the model's images hold more than " + std::to_string(kMaxGltfTexels) + " texels");
+        return decoded;
+    } catch (const InputError& e) {
+        warnings_.say("/images/" + std::to_string(image) + " cannot be decoded (" + e.message() +
+                      "); the textures using it are left out");
+        return nullptr;
+    }
+}
+
 std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::TextureInfo& info, const std::string& at,
+                                                                bool reads_alpha,
                                                                 std::optional<GltfUvTransform>& uv_transform) {
     if (info.index < 0) return std::nullopt;
     if (static_cast<size_t>(info.index) >= model_.textures.size())
@@ -113,31 +130,24 @@ std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::
         throw InputError(file_, 0, 0, texture_at + "/source: there is no image " + std::to_string(texture.source));
     TextureBinding binding;
     binding.path = file_ + "#/images/" + std::to_string(texture.source);
-    auto& image = images_[texture.source];
-    if (!image.second) {
-        image.second = std::make_shared<const std::string>(gltf_image_bytes(model_, texture.source, file_));
+    GltfImage& image = images_[texture.source];
+    if (!image.encoded) {
+        image.encoded = std::make_shared<const std::string>(gltf_image_bytes(model_, texture.source, file_));
         // Many images may name one buffer view: each holds its own copy, and the copies together are capped.
-        encoded_bytes_ += image.second->size();
+        encoded_bytes_ += image.encoded->size();
         if (encoded_bytes_ > kMaxGltfExternalBytes)
             throw InputError(file_, 0, 0, "/images/" + std::to_string(texture.source) + ": the model's images hold more than " +
                                               std::to_string(kMaxGltfExternalBytes) + " encoded bytes");
-        if (!image.second->empty()) {
-            try {
-                auto decoded = std::make_shared<const Texture>(decode_texture(*image.second, binding.path));
-                const TextureLevel& level = decoded->levels.front();
-                decoded_texels_ += static_cast<uint64_t>(level.width) * static_cast<uint64_t>(level.height);
-                if (decoded_texels_ > kMaxGltfTexels)
-                    throw InputError("the model's images hold more than " + std::to_string(kMaxGltfTexels) + " texels");
-                image.first = std::move(decoded);
-            } catch (const InputError& e) {
-                warnings_.say("/images/" + std::to_string(texture.source) + " cannot be decoded (" + e.message() +
-                              "); the textures using it are left out");
-            }
-        }
+        if (!image.encoded->empty()) image.colour = decode(*image.encoded, binding.path, TextureChannels::colour, texture.source);
     }
-    if (!image.first) return std::nullopt;
-    binding.texture = image.first;
-    binding.encoded = image.second;
+    if (!image.colour) return std::nullopt;
+    binding.texture = image.colour;
+    binding.encoded = image.encoded;
+    if (reads_alpha && image_has_alpha(*image.encoded)) {
+        if (!image.alpha) image.alpha = decode(*image.encoded, binding.path, TextureChannels::alpha, texture.source);
+        binding.reads_alpha = image.alpha != nullptr;
+        binding.alpha_texture = image.alpha;
+    }
     if (texture.sampler >= 0) {
         if (static_cast<size_t>(texture.sampler) >= model_.samplers.size())
             throw InputError(file_, 0, 0, texture_at + "/sampler: there is no sampler " + std::to_string(texture.sampler));
@@ -171,16 +181,18 @@ const GltfMaterial& GltfMaterials::at(int index, const std::string& use) {
     material.diffuse = glm::vec3(static_cast<float>(1.0 - metallic));
     material.specular = glm::vec3(static_cast<float>(0.04 * (1.0 - metallic))) + static_cast<float>(metallic) * out.color_factor;
     material.exponent = exponent_for_roughness(roughness);
-    material.texture = base_color_texture(pbr.baseColorTexture, pbr_at + "/baseColorTexture", out.uv_transform);
-    if (m.alphaMode == "BLEND") {
-        material.opacity = static_cast<float>(alpha);
-    } else if (m.alphaMode == "MASK") {
-        out.cut_away = alpha < m.alphaCutoff;
-    } else if (m.alphaMode != "OPAQUE" && !m.alphaMode.empty()) {
+    const bool blend = m.alphaMode == "BLEND", mask = m.alphaMode == "MASK";
+    if (!blend && !mask && m.alphaMode != "OPAQUE" && !m.alphaMode.empty())
         throw InputError(file_, 0, 0, at + "/alphaMode: '" + m.alphaMode + "' is not OPAQUE, MASK or BLEND");
-    }
-    if (material.texture && (m.alphaMode == "BLEND" || m.alphaMode == "MASK"))
-        warnings_.say(at + ": the base colour texture's alpha is not read; " + m.alphaMode + " uses the factor's alpha alone");
+    if (mask && !(std::isfinite(m.alphaCutoff) && m.alphaCutoff >= 0.0))
+        throw InputError(file_, 0, 0, at + "/alphaCutoff: must be a finite number at least 0");
+    material.texture = base_color_texture(pbr.baseColorTexture, pbr_at + "/baseColorTexture", blend || mask, out.uv_transform);
+    // The alpha is the factor's times the texture's where the image has alpha (docs/gltf.md#materials). A cut-out
+    // whose factor is below the cut-off is cut everywhere; without texture alpha, one at or above it is opaque.
+    const bool texture_alpha = material.texture && material.texture->reads_alpha;
+    if (blend || (mask && texture_alpha)) material.opacity = static_cast<float>(alpha);
+    if (mask && texture_alpha) material.alpha_cutoff = static_cast<float>(m.alphaCutoff);
+    if (mask) out.cut_away = alpha < m.alphaCutoff;
     if (pbr.metallicRoughnessTexture.index >= 0 || m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 ||
         m.emissiveTexture.index >= 0)
         warnings_.say(at + ": metallic-roughness, normal, occlusion and emissive textures are not read");

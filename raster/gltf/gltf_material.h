@@ -13,6 +13,7 @@
 #include "raster/gltf/gltf_warnings.h"
 #include "raster/gltf/tiny_gltf_config.h"
 #include "raster/scene/material.h"
+#include "raster/texture/texture.h"
 
 namespace raster {
 
@@ -29,7 +30,7 @@ struct GltfMaterial {
     // The base colour factor: it multiplies COLOR_0, which replaces a raster material's colour, so a primitive with
     // vertex colours carries their product.
     glm::vec3 color_factor{1.0f};
-    // MASK with a base colour alpha below the cut-off: no texture alpha is read, so every triangle is cut away.
+    // MASK with a base colour alpha below the cut-off: no texel's alpha can reach it, so every triangle is cut away.
     bool cut_away = false;
     // The base colour texture's KHR_texture_transform, applied to the primitives' texture coordinates as they are read.
     std::optional<GltfUvTransform> uv_transform;
@@ -45,8 +46,12 @@ public:
     const GltfMaterial& at(int index, const std::string& use);
 
 private:
+    // The texture; with `reads_alpha` (BLEND, MASK) and an image that has alpha, its alpha decoded too.
     std::optional<TextureBinding> base_color_texture(const tinygltf::TextureInfo& info, const std::string& at,
-                                                     std::optional<GltfUvTransform>& uv_transform);
+                                                     bool reads_alpha, std::optional<GltfUvTransform>& uv_transform);
+    // The image's channels decoded within the model's texel cap; null, with a warning, when they cannot be.
+    std::shared_ptr<const Texture> decode(const std::string& encoded, const std::string& name, TextureChannels channels,
+                                          int image);
     // The extension's transform; nothing when it names a texture coordinate set other than 0 (then the caller
     // leaves the texture out, as for any other set).
     std::optional<GltfUvTransform> read_uv_transform(const tinygltf::Value& extension, const std::string& at) const;
@@ -55,7 +60,11 @@ private:
     std::string file_;
     GltfWarnings& warnings_;
     std::map<int, GltfMaterial> materials_;
-    std::map<int, std::pair<std::shared_ptr<const Texture>, std::shared_ptr<const std::string>>> images_;
+    struct GltfImage {
+        std::shared_ptr<const std::string> encoded;
+        std::shared_ptr<const Texture> colour, alpha;  // alpha decoded only when a BLEND or MASK material reads it
+    };
+    std::map<int, GltfImage> images_;
     uint64_t decoded_texels_ = 0, encoded_bytes_ = 0;
 };
 

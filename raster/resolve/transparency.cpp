@@ -42,23 +42,35 @@ struct Blend {
     float alpha = 0.0f;
 };
 
-// MSAA shades each triangle once per pixel: the colours shaded so far in the pixel.
+// A fragment's shaded colour and opacity.
+struct ShadedFragment {
+    glm::vec3 colour{0.0f};
+    float opacity = 1.0f;
+};
+
+// MSAA shades each triangle once per pixel, its opacity with it: what has been shaded so far in the pixel.
 class PixelShadeCache {
 public:
     PixelShadeCache(const Shader& shader, bool msaa) : shader_(shader), msaa_(msaa) {}
     void clear() { entries_.clear(); }
     glm::vec3 shade(uint32_t triangle, const glm::vec3& bary) {
-        if (!msaa_) return shader_.shade(triangle, bary);
-        for (const auto& [id, colour] : entries_)
-            if (id == triangle) return colour;
-        entries_.emplace_back(triangle, shader_.shade(triangle, bary));
-        return entries_.back().second;
+        return msaa_ ? cached(triangle, bary).colour : shader_.shade(triangle, bary);
+    }
+    ShadedFragment fragment(uint32_t triangle, const glm::vec3& bary) {
+        return msaa_ ? cached(triangle, bary) : ShadedFragment{shader_.shade(triangle, bary), shader_.opacity(triangle, bary)};
     }
 
 private:
+    const ShadedFragment& cached(uint32_t triangle, const glm::vec3& bary) {
+        for (const auto& [id, shaded] : entries_)
+            if (id == triangle) return shaded;
+        entries_.emplace_back(triangle, ShadedFragment{shader_.shade(triangle, bary), shader_.opacity(triangle, bary)});
+        return entries_.back().second;
+    }
+
     const Shader& shader_;
     bool msaa_;
-    std::vector<std::pair<uint32_t, glm::vec3>> entries_;
+    std::vector<std::pair<uint32_t, ShadedFragment>> entries_;
 };
 
 // Calls visit(sample index in the band, hit) for every sample of rows [row_begin, row_end) that `t` covers in
@@ -161,11 +173,14 @@ private:
             }
             if (last - first > 1)  // pieces: their samples in pixel and pattern order
                 std::sort(group_.begin(), group_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-            const float a = in_.shader->opacity(triangle);
             size_t shaded_pixel = SIZE_MAX;
             glm::vec3 colour(0.0f);
+            float a = 0.0f;
             for (const auto& [at, bary] : group_) {
-                if (!in_.resolve.msaa || at / samples != shaded_pixel) colour = in_.shader->shade(triangle, bary);
+                if (!in_.resolve.msaa || at / samples != shaded_pixel) {
+                    colour = in_.shader->shade(triangle, bary);
+                    a = in_.shader->opacity(triangle, bary);
+                }
                 shaded_pixel = at / samples;
                 WeightedSum& sum = sums_[at];
                 sum.color += a * colour;
@@ -187,9 +202,9 @@ private:
                          [](const Fragment* a, const Fragment* b) { return a->view_depth < b->view_depth; });
         float transmittance = 1.0f;
         for (const Fragment* f : layers_) {
-            const float a = in_.shader->opacity(f->triangle);
-            blend.color += (transmittance * a) * cache.shade(f->triangle, f->bary);
-            transmittance *= 1.0f - a;
+            const ShadedFragment shaded = cache.fragment(f->triangle, f->bary);
+            blend.color += (transmittance * shaded.opacity) * shaded.colour;
+            transmittance *= 1.0f - shaded.opacity;
         }
         add_opaque(opaque_, at, transmittance, cache, blend);
     }

@@ -39,6 +39,11 @@ struct TextureBinding {
     TextureFilter filter = TextureFilter::trilinear;
     TextureWrap wrap = TextureWrap::repeat;
     int max_anisotropy = 16;  // anisotropic only: most taps along the major axis, in [1, 64]
+    // Whether the image's alpha multiplies the material's opacity (glTF BLEND and MASK; docs/transparency.md),
+    // sampled as the colour is. Only for an image with an alpha channel; raster's copy of that channel is
+    // `alpha_texture`, each texel (a, a, a) so that it is filtered by the colour's own code.
+    bool reads_alpha = false;
+    std::shared_ptr<const Texture> alpha_texture;
 };
 
 // How a texture is sampled: a binding's filter (or the render settings' override), wrap and anisotropy cap.
@@ -63,9 +68,17 @@ struct Material {
     glm::vec3 specular{0.2f};
     float exponent = 32.0f;
     float opacity = 1.0f;  // 1 opaque; below 1 the surface is blended over what lies behind it (docs/transparency.md)
+    // A cut-out (glTF MASK) read only with a texture that reads alpha: a fragment whose opacity times the texture's
+    // alpha is at least the cut-off is opaque (opacity 1), any other is dropped (opacity 0).
+    std::optional<float> alpha_cutoff;
     std::optional<TextureBinding> texture;  // none for an untextured material: no texture memory, no texture work
     std::string name;                       // the MTL or scene name, for messages; may be empty
 };
+
+// Whether the material's surfaces go to the transparency pass: an opacity below 1, or a texture's alpha read.
+inline bool is_blended(const Material& material) {
+    return material.opacity < 1.0f || (material.texture && material.texture->reads_alpha);
+}
 
 // Triangles from `first_triangle` (local to the mesh) to the next part's first use `material` (OBJ `usemtl`).
 struct MaterialPart {

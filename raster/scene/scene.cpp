@@ -97,7 +97,7 @@ bool has_shadows(const Scene& scene) {
 }
 
 bool has_transparency(const Scene& scene) {
-    return any_material(scene, [](const Material& material) { return material.opacity < 1.0f; });
+    return any_material(scene, [](const Material& material) { return is_blended(material); });
 }
 
 const char* to_string(TransparencyMode mode) { return mode == TransparencyMode::sorted ? "sorted" : "weighted"; }

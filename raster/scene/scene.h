@@ -169,7 +169,7 @@ struct RenderSettings {
     // must be built (build_needed_mip_chains) before rendering.
     std::optional<TextureFilter> texture_filter;
     ShadowSettings shadows;  // read only when a light casts shadows
-    TransparencySettings transparency;  // read only when a material's opacity is below 1
+    TransparencySettings transparency;  // read only when a material is blended (is_blended)
 };
 
 struct SceneAnimation;  // raster/scene/animation.h
@@ -190,7 +190,8 @@ bool has_textures(const Scene& scene);
 // Whether any light casts shadows: the only scenes that build shadow maps.
 bool has_shadows(const Scene& scene);
 
-// Whether any material has an opacity below 1: the only scenes with a transparency pass.
+// Whether any material is blended (is_blended: an opacity below 1 or a texture's alpha read): the only scenes with
+// a transparency pass.
 bool has_transparency(const Scene& scene);
 
 const char* to_string(TransparencyMode mode);

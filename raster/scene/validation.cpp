@@ -251,6 +251,10 @@ void validate_scene(const Scene& scene) {
         for_each_material(mesh, [&](const Material& material) {
             if (!(material.opacity >= 0.0f && material.opacity <= 1.0f))
                 fail(mesh.source + ": material opacity must be in [0, 1], got " + std::to_string(material.opacity));
+            if (material.alpha_cutoff && !(std::isfinite(*material.alpha_cutoff) && *material.alpha_cutoff >= 0.0f))
+                fail(mesh.source + ": material alpha cut-off must be finite and at least 0");
+            if (material.texture && material.texture->reads_alpha && !material.texture->alpha_texture)
+                fail(mesh.source + ": a texture that reads alpha needs its alpha decoded");
         });
     }
 }

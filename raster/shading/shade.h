@@ -37,8 +37,9 @@ public:
     void shade_many(const uint32_t* triangle, const glm::vec3* bary, size_t count, glm::vec3* out) const {
         model_->shade_many(triangle, bary, count, out);
     }
-    // The opacity of the triangle's material (1 opaque).
-    float opacity(uint32_t triangle) const { return surface_.material(triangle).opacity; }
+    // The opacity of triangle `triangle` at barycentrics `bary` (1 opaque): its material's, times its texture's
+    // alpha where the texture reads alpha, cut to 0 or 1 for a cut-out (SurfaceLookup::opacity).
+    float opacity(uint32_t triangle, const glm::vec3& bary) const { return surface_.opacity(triangle, bary); }
 
 private:
     SurfaceLookup surface_;

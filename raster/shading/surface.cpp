@@ -52,6 +52,17 @@ bool SurfaceLookup::texture_factor(uint32_t triangle, const glm::vec3& bary, glm
     return true;
 }
 
+float SurfaceLookup::opacity(uint32_t triangle, const glm::vec3& bary) const {
+    const Material& m = material(triangle);
+    if (!m.texture || !m.texture->reads_alpha) return m.opacity;
+    const TexturePoint point = textures_.at(triangle, bary);
+    const float texel_alpha = sample_texture(*m.texture->alpha_texture, sampler_of(*m.texture, scene_.settings.texture_filter),
+                                             point.uv, point.duv_dx, point.duv_dy).x;
+    const float alpha = m.opacity * texel_alpha;
+    if (!m.alpha_cutoff) return alpha;
+    return alpha >= *m.alpha_cutoff ? 1.0f : 0.0f;
+}
+
 glm::vec3 SurfaceLookup::lit_color(uint32_t triangle, const glm::vec3& bary, const glm::vec3* texel,
                                    const LightingTerms& terms) const {
     return lit(texel ? base_color(triangle, bary) * *texel : base_color(triangle, bary), terms);

@@ -54,6 +54,9 @@ public:
     bool textured() const { return !textures_.empty(); }
     // The texture's value at the point when the triangle's material has one (it multiplies the base colour).
     bool texture_factor(uint32_t triangle, const glm::vec3& bary, glm::vec3& factor) const;
+    // The fragment's opacity at the point (docs/transparency.md): the material's, times the texture's alpha when it
+    // reads alpha; for a cut-out, 1 where that is at least the cut-off and 0 elsewhere.
+    float opacity(uint32_t triangle, const glm::vec3& bary) const;
     // base * diffuse + specular, the base colour times the texel when there is one.
     glm::vec3 lit_color(uint32_t triangle, const glm::vec3& bary, const glm::vec3* texel,
                         const LightingTerms& terms) const;

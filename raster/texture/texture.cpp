@@ -1,4 +1,4 @@
-// Texture images: decoded through stb_image into float RGB, and their area-weighted mip chain.
+// Texture images: decoded through stb_image into float RGB (or an alpha channel), and their area-weighted mip chain.
 #include "raster/texture/texture.h"
 
 #include <algorithm>
@@ -23,13 +23,16 @@ struct StbFree {
 };
 
 template <typename Code>
-void fill_level(TextureLevel& level, const Code* pixels, int channels, float full_scale) {
+void fill_level(TextureLevel& level, const Code* pixels, int channels, float full_scale, TextureChannels which) {
     level.texels.resize(static_cast<size_t>(level.width) * level.height);
+    const bool grey = channels < 3, has_alpha = channels == 2 || channels == 4;
     for (size_t i = 0; i < level.texels.size(); ++i) {
         const Code* p = pixels + i * channels;
-        const bool grey = channels < 3;
         // A division, so that each texel is the float nearest code / full scale.
-        level.texels[i] = glm::vec3(p[0], grey ? p[0] : p[1], grey ? p[0] : p[2]) / full_scale;
+        if (which == TextureChannels::alpha)
+            level.texels[i] = glm::vec3(has_alpha ? static_cast<float>(p[channels - 1]) / full_scale : 1.0f);
+        else
+            level.texels[i] = glm::vec3(p[0], grey ? p[0] : p[1], grey ? p[0] : p[2]) / full_scale;
     }
 }
 
@@ -56,7 +59,7 @@ std::vector<AxisWeights> axis_weights(int size, int target) {
 
 }  // namespace
 
-Texture decode_texture(std::string_view bytes, const std::string& name) {
+Texture decode_texture(std::string_view bytes, const std::string& name, TextureChannels which) {
     if (bytes.size() > static_cast<size_t>(INT32_MAX)) throw InputError(name, 0, 0, "texture file over 2 GiB");
     const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
     const int length = static_cast<int>(bytes.size());
@@ -76,15 +79,15 @@ Texture decode_texture(std::string_view bytes, const std::string& name) {
     if (stbi_is_hdr_from_memory(data, length)) {
         std::unique_ptr<float, StbFree> pixels(stbi_loadf_from_memory(data, length, &w, &h, &n, 0));
         if (!pixels) failure = stbi_failure_reason();
-        else level.width = w, level.height = h, fill_level(level, pixels.get(), n, 1.0f);
+        else level.width = w, level.height = h, fill_level(level, pixels.get(), n, 1.0f, which);
     } else if (stbi_is_16_bit_from_memory(data, length)) {
         std::unique_ptr<stbi_us, StbFree> pixels(stbi_load_16_from_memory(data, length, &w, &h, &n, 0));
         if (!pixels) failure = stbi_failure_reason();
-        else level.width = w, level.height = h, fill_level(level, pixels.get(), n, 65535.0f);
+        else level.width = w, level.height = h, fill_level(level, pixels.get(), n, 65535.0f, which);
     } else {
         std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data, length, &w, &h, &n, 0));
         if (!pixels) failure = stbi_failure_reason();
-        else level.width = w, level.height = h, fill_level(level, pixels.get(), n, 255.0f);
+        else level.width = w, level.height = h, fill_level(level, pixels.get(), n, 255.0f, which);
     }
     if (failure) throw InputError(name, 0, 0, std::string("cannot decode the texture: ") + failure);
     for (const glm::vec3& texel : level.texels)
@@ -92,6 +95,14 @@ Texture decode_texture(std::string_view bytes, const std::string& name) {
             throw InputError(name, 0, 0, "the texture holds a value that is not a finite number");
     texture.levels.push_back(std::move(level));
     return texture;
+}
+
+bool image_has_alpha(std::string_view bytes) {
+    if (bytes.size() > static_cast<size_t>(INT32_MAX)) return false;
+    int width = 0, height = 0, channels = 0;
+    return stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width,
+                                 &height, &channels) &&
+           (channels == 2 || channels == 4);
 }
 
 Texture load_texture(const std::filesystem::path& path) {

@@ -30,12 +30,22 @@ struct Texture {
 inline constexpr int kMaxTextureDimension = 16384;
 inline constexpr uint64_t kMaxTextureTexels = uint64_t{1} << 25;  // 32 M texels: 384 MiB as float RGB
 
+// Which of an image's channels a decoded texture holds.
+enum class TextureChannels {
+    colour,  // RGB; a grey image replicated to RGB
+    alpha,   // the alpha channel in all three components, (a, a, a); 1 where the image has none
+};
+
 // Decodes an image (PNG, JPEG, TGA, BMP, PSD, GIF, HDR, PNM: whatever stb_image reads) into level 0.
 // Colour space (docs/textures.md): an 8- or 16-bit texel's value is the float nearest its code over 255 or 65535
 // (an HDR value is taken as it is), in the one space raster uses for every colour, so an unlit texture drawn one
-// texel per pixel writes back its own bytes. Grey images are replicated to RGB; alpha is not read.
+// texel per pixel writes back its own bytes. Alpha, when asked for, is its code over the full scale likewise.
 // Throws InputError naming `name` when the bytes are not an image stb_image reads or exceed the limits above.
-Texture decode_texture(std::string_view bytes, const std::string& name);
+Texture decode_texture(std::string_view bytes, const std::string& name,
+                       TextureChannels channels = TextureChannels::colour);
+
+// Whether the image has an alpha channel (grey + alpha or RGBA); false for bytes stb_image cannot read.
+bool image_has_alpha(std::string_view bytes);
 
 // Reads and decodes a texture file (at most 1 GiB). Throws InputError naming the file.
 Texture load_texture(const std::filesystem::path& path);

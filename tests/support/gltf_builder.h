@@ -41,6 +41,14 @@ public:
         return static_cast<int>(document["accessors"].size() - 1);
     }
     int positions(const std::vector<float>& xyz) { return accessor(xyz, "VEC3", 5126); }
+    // Appends an image's bytes as a view and the image naming it; returns the image's index.
+    int image(const std::string& encoded) {
+        while (bytes.size() % 4) bytes.push_back(0);
+        document["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", bytes.size()}, {"byteLength", encoded.size()}});
+        bytes.insert(bytes.end(), encoded.begin(), encoded.end());
+        document["images"].push_back({{"bufferView", document["bufferViews"].size() - 1}, {"mimeType", "image/png"}});
+        return static_cast<int>(document["images"].size() - 1);
+    }
 
     // A mesh of one primitive; returns the mesh's index.
     int mesh(const nlohmann::json& primitive) {

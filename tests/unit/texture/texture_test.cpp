@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/core/errors.h"
+#include "tests/support/alpha_textures.h"
 
 namespace raster {
 namespace {
@@ -28,6 +29,25 @@ TEST(TextureDecode, aTexelIsItsByteOver255WithRowZeroAtTheTop) {
 TEST(TextureDecode, greyIsReplicatedToRgb) {
     const Texture t = decode_texture("P5\n1 1\n255\n\x33", "grey.pgm");
     EXPECT_EQ(t.levels[0].at(0, 0), glm::vec3(51.0f / 255.0f));
+}
+
+TEST(TextureDecode, alphaIsTheLastChannelOverItsFullScaleInEveryComponentAndOneWithoutIt) {
+    const std::string rgba = test_support::tga_rgba(2, 1, {{10, 20, 30, 0}, {40, 50, 60, 128}});
+    EXPECT_TRUE(image_has_alpha(rgba));
+    const Texture alpha = decode_texture(rgba, "two.tga", TextureChannels::alpha);
+    EXPECT_EQ(alpha.levels[0].at(0, 0), glm::vec3(0.0f));
+    EXPECT_EQ(alpha.levels[0].at(1, 0), glm::vec3(128.0f / 255.0f));
+    EXPECT_EQ(decode_texture(rgba, "two.tga").levels[0].at(1, 0), glm::vec3(40.0f, 50.0f, 60.0f) / 255.0f);
+    const std::string rgb = ppm(1, 1, std::string("\x01\x02\x03", 3));
+    EXPECT_FALSE(image_has_alpha(rgb));
+    EXPECT_FALSE(image_has_alpha("not an image"));
+    EXPECT_EQ(decode_texture(rgb, "one.ppm", TextureChannels::alpha).levels[0].at(0, 0), glm::vec3(1.0f));
+    // Grey + alpha (a 16-bit grey TGA): the second channel, and grey in every colour component.
+    std::string grey_alpha = std::string(18, '\0') + "\x10\x33";
+    grey_alpha[2] = 3, grey_alpha[12] = 1, grey_alpha[14] = 1, grey_alpha[16] = 16, grey_alpha[17] = 0x28;
+    EXPECT_TRUE(image_has_alpha(grey_alpha));
+    EXPECT_EQ(decode_texture(grey_alpha, "ga.tga", TextureChannels::alpha).levels[0].at(0, 0), glm::vec3(51.0f / 255.0f));
+    EXPECT_EQ(decode_texture(grey_alpha, "ga.tga").levels[0].at(0, 0), glm::vec3(16.0f / 255.0f));
 }
 
 TEST(TextureDecode, refusesWhatIsNotAnImageNamingTheFile) {
