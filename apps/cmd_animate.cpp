@@ -60,7 +60,7 @@ int run_animate(const AnimateFlags& flags, std::ostream& out, std::ostream& err)
     int frame_count = 0;
     try {
         start_threads(flags.settings.threads);
-        scene = load_scene_file(flags.scene, {flags.settings.strict}).scene;
+        scene = load_scene_file(flags.scene, load_options(flags.settings)).scene;
         if (!scene.animation) throw InputError(scene.path, 0, 0, "the scene has no animation (docs/animation.md)");
         apply_settings_flags(flags.settings, scene);
         const SceneAnimation& animation = *scene.animation;

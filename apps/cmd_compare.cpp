@@ -58,7 +58,7 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
     SceneFile file;
     Scene& scene = file.scene;
     try {
-        file = load_scene_file(flags.scene, {flags.settings.strict});
+        file = load_scene_file(flags.scene, load_options(flags.settings));
         if (file.request.self_check)
             throw InputError(flags.scene, 0, 0,
                              "this file asks for a check of its own, not an image: `raster render` writes nothing to "

@@ -85,7 +85,7 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     const auto load_start = Clock::now();
     try {
         start_threads(flags.settings.threads);  // the workers start while the scene loads
-        file = load_scene_file(flags.scene, {flags.settings.strict});
+        file = load_scene_file(flags.scene, load_options(flags.settings));
         apply_settings_flags(flags.settings, file.scene);
     } catch (const InputError& error) {
         err << "raster render: error: " << error.what() << "\n";

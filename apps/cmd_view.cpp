@@ -67,9 +67,21 @@ int run_view(const ViewFlags& flags, std::ostream& out, std::ostream& err) {
     // server as soon as it serves, exit code 0).
     const StopSignals signals;
     Scene scene;
+    ViewerCameras cameras;
     try {
-        scene = load_scene_file(flags.scene, {flags.settings.strict}).scene;
+        SceneFile file = load_scene_file(flags.scene, load_options(flags.settings));
+        scene = std::move(file.scene);
         apply_settings_flags(flags.settings, scene);
+        cameras.names = std::move(file.cameras);
+        cameras.loaded = flags.settings.camera;
+        // Another of the file's cameras: the file read again as it was the first time, drawn from that camera.
+        cameras.load = [flags](int camera) {
+            SettingsFlags settings = flags.settings;
+            settings.camera = camera;
+            Scene other = load_scene_file(flags.scene, load_options(settings)).scene;
+            apply_settings_flags(settings, other);
+            return other;
+        };
     } catch (const InputError& error) {
         err << "raster view: error: " << error.what() << "\n";
         return kExitBadInput;
@@ -78,7 +90,7 @@ int run_view(const ViewFlags& flags, std::ostream& out, std::ostream& err) {
     options.threads = flags.settings.threads;
     options.alpha = flags.settings.alpha;
     options.keep_visibility = false;  // the page shows colour only
-    ViewerSession session(std::move(scene), options);
+    ViewerSession session(std::move(scene), options, std::move(cameras));
     ViewerServer server(session, err);
     const int port = server.bind(flags.port);
     if (port < 0) {

@@ -65,6 +65,10 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
         ->check(CLI::Range(static_cast<int>(kMinFragments), static_cast<int>(kMaxFragments)));
     command.add_option("--time", flags.time,
                        "An animated scene at this instant, in seconds (default 0; docs/animation.md)");
+    command.add_option("--camera", flags.camera,
+                       "glTF: draw from the file's camera N, counting its camera nodes depth first (default 0, the "
+                       "first; docs/gltf.md)")
+        ->check(CLI::Range(0, 1 << 16));
     command.add_flag("--strict", flags.strict,
                      "Refuse an OBJ whose material library or texture cannot be read, or whose MTL has a nameless "
                      "newmtl (default: draw it with a warning, as viewers do)");

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "raster/compat/scene_loader.h"
 #include "raster/scene/scene.h"
 
 namespace raster::cli {
@@ -28,16 +29,20 @@ struct SettingsFlags {
     std::optional<int> max_fragments;
     std::optional<float> time;  // an animated scene's instant
     bool strict = false;        // read when loading the scene (scene_loader.h SceneLoadOptions)
+    int camera = 0;             // likewise: a glTF file's camera to draw from
     bool alpha = false;
     int threads = 0;
 };
 
 // Adds --samples, --pattern, --msaa, --shading, --cel-bands, --filter, --snap-bits, --cull, the precision modes, the
-// shadow and transparency flags, --time, --strict, --alpha and --threads.
+// shadow and transparency flags, --time, --camera, --strict, --alpha and --threads.
 void register_settings_flags(CLI::App& command, SettingsFlags& flags);
 
 // Poses an animated scene at --time, applies the flags given to the scene's settings; throws InputError when the
 // scene has no animation to pose or the result is not a valid frame.
 void apply_settings_flags(const SettingsFlags& flags, Scene& scene);
+
+// How the flags ask for the scene file to be read: --strict and --camera.
+inline SceneLoadOptions load_options(const SettingsFlags& flags) { return {flags.strict, flags.camera}; }
 
 }  // namespace raster::cli

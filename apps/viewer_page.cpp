@@ -1,5 +1,8 @@
-// The viewer's page, HTML, style and script in one string: controls, the frame loop, orbit and zoom, self-test.
+// The viewer's page, HTML, style and script in one string: controls, the frame loop, orbit and zoom, animation
+// and cameras; the self-test's script (viewer_self_test.h) goes where the page marks it.
 #include "apps/viewer_page.h"
+
+#include "apps/viewer_self_test.h"
 
 namespace raster::cli {
 namespace {
@@ -42,6 +45,7 @@ constexpr const char* kPage = R"PAGE(<!doctype html>
       <input type="range" id="time" min="0" max="1" step="0.01" aria-label="time">
       <span class="readout" id="time-readout"></span></fieldset>
     <fieldset><legend>Camera</legend>
+      <div id="cameras"></div>
       <div class="readout" id="camera"></div>
       <button type="button" id="camera-reset">reset</button>
       <div class="note">Drag the image to orbit about the target, turn the wheel over it to zoom.</div></fieldset>
@@ -64,9 +68,12 @@ const image = $('frame');
 
 // What the next frame asks for; filter null keeps the scene's own.
 // time null: the scene as loaded (a static scene, or an animated one not yet played or scrubbed).
-const view = {shading: 'blinn-phong', samples: 1, msaa: false, filter: null, yaw: 0, pitch: 0, distance: 1, time: null};
+// camera null: the one the scene was loaded with.
+const view = {shading: 'blinn-phong', samples: 1, msaa: false, filter: null, yaw: 0, pitch: 0, distance: 1, time: null,
+              camera: null};
 // From GET /state: the elevation limit, the scene eye's own elevation, the distance range, the scene's filter.
-const scene = {elevationLimit: 89, elevation: 0, distance: [0.05, 20], filter: 'none', textured: false, animation: null};
+const scene = {elevationLimit: 89, elevation: 0, distance: [0.05, 20], filter: 'none', textured: false, animation: null,
+               cameras: [], loadedCamera: 0};
 // Playing: the wall clock when the last frame was asked for, so the next advances by the time that passed.
 let playing = false, playedAt = 0;
 const frames = [];  // every frame shown: {params, index, ms, hash (self-test only)}
@@ -85,6 +92,7 @@ function renderParams() {
                   yaw: view.yaw.toFixed(2), pitch: view.pitch.toFixed(2), distance: view.distance.toFixed(4)};
   if (view.filter) params.filter = view.filter;
   if (view.time !== null) params.time = view.time.toFixed(3);
+  if (view.camera !== null) params.camera = String(view.camera);
   return params;
 }
 
@@ -186,6 +194,8 @@ function showControls() {
   markPressed('samples', SAMPLES, view.samples);
   markPressed('filter', FILTERS, view.filter || scene.filter);
   $('msaa').checked = view.msaa;
+  scene.cameras.forEach((name, i) => $(`camera-pick-${i}`).setAttribute(
+    'aria-pressed', String(i === (view.camera === null ? scene.loadedCamera : view.camera))));
   if (scene.animation) {
     const time = view.time === null ? scene.animation.start : view.time;
     $('time').value = String(time);
@@ -259,90 +269,7 @@ function buildControls() {
   }, {passive: false});
 }
 
-// The self-test's animation steps: the slider moved to the middle of the keys, then play pressed until three
-// frames have come, then pause; checks that each asked for its instant and that the instants moved on.
-async function animationSelfTest(report, step, before) {
-  const {start, end} = scene.animation;
-  const middle = (start + end) / 2;
-  const scrubbed = await step('time slider', () => {
-    $('time').value = String(middle);
-    $('time').dispatchEvent(new Event('input', {bubbles: true}));
-  });
-  const played = [];
-  await new Promise((resolve) => {
-    const seen = frames.length;
-    $('play').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
-    const poll = () => {
-      if (frames.length - seen >= 3) {
-        $('play').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
-        played.push(...frames.slice(seen));
-        resolve();
-      } else {
-        setTimeout(poll, 10);
-      }
-    };
-    poll();
-  });
-  await idle();
-  report.steps.push({name: 'play', new_frames: played.length, frame: frames[frames.length - 1]});
-  const times = played.map((frame) => Number(frame.params.time));
-  report.checks = {
-    slider_asked_for_its_instant: Math.abs(Number(scrubbed.params.time) - middle) < 0.01,
-    slider_changed_the_image: scrubbed.hash !== before.hash,
-    play_advanced_the_instant: times.length >= 3 && times.every((t, i) => i === 0 || t !== times[i - 1]),
-    pause_stopped_playing: !playing && $('play').getAttribute('aria-pressed') === 'false',
-  };
-}
-
-// The self-test (?selftest=1): a user's click, drag and wheel, as DOM events through the handlers above, each
-// followed by the frame it brought; the report says what each frame asked for and the hash of the bytes shown.
-async function runSelfTest() {
-  const report = {steps: []};
-  try {
-    await idle();
-    const step = async (name, act) => {
-      const before = frames.length;
-      act();
-      await idle();
-      const frame = frames[frames.length - 1];
-      report.steps.push({name, new_frames: frames.length - before, frame});
-      return frame;
-    };
-    const first = await step('initial', () => {});
-    const flat = await step('click shading-flat', () =>
-      $('shading-flat').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window})));
-    const box = image.getBoundingClientRect();
-    const centre = {clientX: box.left + box.width / 2, clientY: box.top + box.height / 2};
-    const pointer = (type, dx, dy) => image.dispatchEvent(new PointerEvent(type, {
-      bubbles: true, cancelable: true, pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0,
-      buttons: type === 'pointerup' ? 0 : 1, clientX: centre.clientX + dx, clientY: centre.clientY + dy}));
-    const dragged = await step('drag', () => {
-      pointer('pointerdown', 0, 0);
-      pointer('pointermove', 60, 25);
-      pointer('pointerup', 60, 25);
-    });
-    const zoomed = await step('wheel', () => image.dispatchEvent(new WheelEvent('wheel', {
-      bubbles: true, cancelable: true, deltaY: 300, ...centre})));
-    if (scene.animation) await animationSelfTest(report, step, zoomed);
-    report.checks = {
-      ...report.checks,
-      flat_asked_for: flat.params.shading === 'flat',
-      flat_changed_the_image: flat.hash !== first.hash,
-      drag_moved_the_camera: flat.params.yaw !== dragged.params.yaw && flat.params.pitch !== dragged.params.pitch,
-      drag_changed_the_image: dragged.hash !== flat.hash,
-      drag_kept_the_shading: dragged.params.shading === 'flat',
-      wheel_moved_the_camera_back: Number(zoomed.params.distance) > Number(dragged.params.distance),
-      wheel_changed_the_image: zoomed.hash !== dragged.hash,
-    };
-    report.pass = Object.values(report.checks).every(Boolean);
-  } catch (error) {
-    report.error = String(error);
-    report.pass = false;
-  }
-  $('selftest').textContent = JSON.stringify(report);
-  $('selftest').hidden = false;
-  document.body.dataset.selftest = report.pass ? 'pass' : 'fail';
-}
+/*SELF-TEST*/
 
 async function start() {
   buildControls();
@@ -353,7 +280,8 @@ async function start() {
                          msaa: state.scene_settings.msaa});
     Object.assign(scene, {elevationLimit: state.limits.elevation_degrees, elevation: state.camera.elevation_degrees,
                           distance: state.limits.distance, filter: state.scene_settings.filter,
-                          textured: state.textured, animation: state.animation});
+                          textured: state.textured, animation: state.animation,
+                          cameras: state.cameras.names, loadedCamera: state.cameras.loaded});
     $('scene').textContent = `${state.scene} (${state.width} x ${state.height})`;
   } catch (error) {
     showStatus(`the viewer's state could not be read: ${error}`);
@@ -364,6 +292,16 @@ async function start() {
     for (const filter of FILTERS) $(`filter-${filter}`).disabled = true;
     $('filter-note').textContent = 'The scene has no textures: no filter changes it.';
   }
+  if (scene.cameras.length < 2) scene.cameras = [];  // one camera: nothing to pick
+  scene.cameras.forEach((name, i) => {
+    const button = document.createElement('button');
+    Object.assign(button, {type: 'button', id: `camera-pick-${i}`, textContent: name});
+    button.addEventListener('click', () => {
+      Object.assign(view, {camera: i, yaw: 0, pitch: 0, distance: 1});
+      requestFrame();
+    });
+    $('cameras').appendChild(button);
+  });
   if (scene.animation) {
     const {start, end} = scene.animation;
     Object.assign($('time'), {min: String(start), max: String(end), value: String(start)});
@@ -382,7 +320,12 @@ start();
 }  // namespace
 
 const std::string& viewer_page_html() {
-    static const std::string page = kPage;
+    static const std::string page = [] {
+        std::string text = kPage;
+        const std::string marker = "/*SELF-TEST*/";
+        text.replace(text.find(marker), marker.size(), viewer_self_test_script());
+        return text;
+    }();
     return page;
 }
 

@@ -99,6 +99,14 @@ const std::map<std::string, ParameterParser>& parameter_parsers() {
              return parse_bounded("distance", value, kMinDistance, kMaxDistance,
                                   " (times the scene's eye-target distance)", request.distance);
          }},
+        {"camera",
+         [](const std::string& value, ViewRequest& request) -> std::string {
+             const std::optional<int> camera = whole_number<int>(value);
+             if (!camera || *camera < 0 || *camera > kMaxViewCamera)
+                 return "camera must be a whole number in [0, " + std::to_string(kMaxViewCamera) + "], got " + quoted(value);
+             request.camera = *camera;
+             return "";
+         }},
         {"time",
          [](const std::string& value, ViewRequest& request) {
              double time = 0.0;

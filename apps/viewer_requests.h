@@ -17,6 +17,7 @@ inline constexpr double kMinDistance = 0.05;  // times the scene's own eye-targe
 inline constexpr double kMaxDistance = 20.0;
 inline constexpr int kMaxViewSamples = 16;  // the pattern decides which counts up to this are allowed
 inline constexpr double kMaxViewTime = 1e6;  // seconds, either side of 0
+inline constexpr int kMaxViewCamera = 1 << 16;
 
 // One frame as a request asks for it. Every field left out keeps the scene's own value (its camera: yaw 0,
 // pitch 0, distance 1), so a request alone decides its frame, whatever came before it.
@@ -29,6 +30,7 @@ struct ViewRequest {
     double pitch_degrees = 0.0;
     double distance = 1.0;
     std::optional<double> time;  // an animated scene posed at this instant, in seconds; none: as it was loaded
+    std::optional<int> camera;   // a glTF file's camera to draw from (SceneLoadOptions::camera); none: the loaded one
 };
 
 // A request, or what is wrong with it (one line, plain text, naming the parameter and quoting what was sent).
@@ -42,7 +44,8 @@ using QueryParameters = std::multimap<std::string, std::string>;
 
 // Parses GET /render's parameters: shading (unlit, flat, gouraud, phong, blinn-phong, cel, gooch), samples
 // (integer, 1..16), msaa (0 or 1), filter (nearest, bilinear, trilinear, anisotropic), yaw and pitch (finite
-// degrees, |yaw| <= 360, |pitch| <= 180), distance (finite, 0.05..20) and time (finite seconds, |time| <= 1e6).
+// degrees, |yaw| <= 360, |pitch| <= 180), distance (finite, 0.05..20), time (finite seconds, |time| <= 1e6) and
+// camera (integer, 0..65536).
 // Refuses unknown or repeated names.
 ParsedViewRequest parse_view_request(const QueryParameters& parameters);
 

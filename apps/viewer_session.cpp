@@ -56,6 +56,7 @@ nlohmann::json to_json(const ViewerFrameRecord& record) {
             {"pitch", record.pitch_degrees},
             {"distance", record.distance},
             {"time", record.time ? nlohmann::json(*record.time) : nlohmann::json(nullptr)},
+            {"camera", record.camera},
             {"eye", to_json(record.eye)},
             {"frame_ms", record.frame_ms},
             {"encode_ms", record.encode_ms},
@@ -63,7 +64,31 @@ nlohmann::json to_json(const ViewerFrameRecord& record) {
             {"png_fnv1a64", hex64(record.png_fnv1a)}};
 }
 
-ViewerSession::ViewerSession(Scene scene, const RenderOptions& options) : scene_(std::move(scene)), options_(options) {}
+ViewerSession::ViewerSession(Scene scene, const RenderOptions& options, ViewerCameras cameras)
+    : scene_(std::move(scene)), cameras_(std::move(cameras)), options_(options) {}
+
+void ViewerSession::use_camera(int index, Scene& frame) {
+    if (index == cameras_.loaded) return;
+    const int count = static_cast<int>(cameras_.names.size());
+    if (index >= count || !cameras_.load)
+        throw ViewRequestError("camera " + std::to_string(index) + ": the scene places " + std::to_string(count) +
+                               (count == 1 ? " camera" : " cameras"));
+    auto found = camera_views_.find(index);
+    if (found == camera_views_.end()) {
+        Scene loaded;
+        try {
+            loaded = cameras_.load(index);
+        } catch (const std::exception& e) {
+            throw ViewRequestError("camera " + std::to_string(index) + ": " + e.what());
+        }
+        found = camera_views_.emplace(index, CameraView{loaded.camera, loaded.settings.width, loaded.settings.height,
+                                                        loaded.animation}).first;
+    }
+    frame.camera = found->second.camera;
+    frame.settings.width = found->second.width;
+    frame.settings.height = found->second.height;
+    frame.animation = found->second.animation;
+}
 
 const Scene& ViewerSession::scene_with_filter(const std::optional<TextureFilter>& filter) {
     if (!filter) return scene_;
@@ -84,6 +109,7 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     if (request.shading) settings.shading = *request.shading;
     if (request.samples) settings.samples = *request.samples;
     if (request.msaa) settings.msaa = *request.msaa;
+    if (request.camera) use_camera(*request.camera, frame);
     if (request.time) {
         if (!frame.animation) throw ViewRequestError("time: the scene has no animation to pose");
         pose_scene(frame, static_cast<float>(*request.time));  // the camera too, where the animation carries it
@@ -108,6 +134,7 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     record.pitch_degrees = request.pitch_degrees;
     record.distance = request.distance;
     record.time = request.time;
+    record.camera = request.camera.value_or(cameras_.loaded);
     record.eye = frame.camera.eye;
     record.frame_ms = buffers_.stats.ms_total;
     record.png_bytes = result.png.size();
@@ -124,6 +151,7 @@ nlohmann::json ViewerSession::state() const {
             {"width", scene_.settings.width},
             {"height", scene_.settings.height},
             {"textured", has_textures(scene_)},
+            {"cameras", {{"names", cameras_.names}, {"loaded", cameras_.loaded}}},
             {"animation", scene_.animation ? nlohmann::json{{"start", scene_.animation->start}, {"end", scene_.animation->end}}
                                            : nlohmann::json(nullptr)},
             {"scene_settings",

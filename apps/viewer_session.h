@@ -4,12 +4,15 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
+#include <memory>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -28,6 +31,7 @@ struct ViewerFrameRecord {
     std::string filter;  // the filter asked for, or "scene" when the request kept the scene's own
     double yaw_degrees = 0, pitch_degrees = 0, distance = 1;
     std::optional<double> time;  // the instant posed, when the request asked for one
+    int camera = 0;              // the file's camera drawn from
     glm::vec3 eye{0.0f};  // the orbited camera's
     double frame_ms = 0;   // render() alone (RenderStats::ms_total): the X-Frame-Ms header
     double encode_ms = 0;  // the PNG encoding after it
@@ -51,10 +55,18 @@ uint64_t fnv1a_64(std::string_view bytes);
 // The hash as the JSON and the page write it: 16 lowercase hex digits.
 std::string hex64(uint64_t value);
 
+// A file's cameras, for a scene that places several (glTF): their names, the index of the one the scene was loaded
+// with, and how to load the scene drawn from another, as the command loaded the first (its flags applied).
+struct ViewerCameras {
+    std::vector<std::string> names;
+    int loaded = 0;
+    std::function<Scene(int camera)> load;
+};
+
 class ViewerSession {
 public:
     // Keeps `scene` (valid, as load_scene returns it) for the whole session; `options` are every frame's.
-    ViewerSession(Scene scene, const RenderOptions& options);
+    ViewerSession(Scene scene, const RenderOptions& options, ViewerCameras cameras = {});
 
     // Renders the request on a copy of the scene and records it. One render at a time: concurrent calls wait.
     // Throws ViewRequestError when the request makes an invalid frame (say, 2 samples on a grid pattern).
@@ -71,8 +83,19 @@ public:
 private:
     // The scene as loaded, or a copy with every textured material's filter set (built once per filter).
     const Scene& scene_with_filter(const std::optional<TextureFilter>& filter);
+    // What drawing from another of the file's cameras changes: the camera, the image's size (its aspect) and the
+    // animation (which node carries the camera). Loaded once per camera; the rest of that load is dropped.
+    struct CameraView {
+        Camera camera;
+        int width = 0, height = 0;
+        std::shared_ptr<const SceneAnimation> animation;
+    };
+    // `frame` drawn from camera `index`; throws ViewRequestError when the file has no such camera.
+    void use_camera(int index, Scene& frame);
 
     const Scene scene_;
+    const ViewerCameras cameras_;
+    std::map<int, CameraView> camera_views_;
     const RenderOptions options_;
     std::map<TextureFilter, Scene> filtered_scenes_;
     RenderResult buffers_;  // reused from frame to frame

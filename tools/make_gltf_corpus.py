@@ -15,7 +15,8 @@
 - alpha_cutouts.gltf: texture alpha. A leaf-shaped cut-out (MASK, cut-off 0.5, an RGBA texture whose alpha is 0
   outside the leaf, 255 inside and graded across a two-texel rim) swinging on LINEAR rotation keys, a pane whose alpha
   runs from 0.15 to 0.9 across it (BLEND, base colour factor alpha 0.8) in front of it, an opaque back wall and
-  floor; images in data URIs, trilinear filtering, a camera and a point light.
+  floor; images in data URIs, trilinear filtering, a point light and two cameras (the second, "side", square and
+  without zfar, for --camera 1).
 """
 import base64
 import json
@@ -283,7 +284,7 @@ def alpha_cutouts():
         "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
         "extensionsUsed": ["KHR_lights_punctual"],
         "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "color": [1, 1, 0.95], "intensity": 30}]}},
-        "scenes": [{"nodes": [0, 1, 2, 3, 4, 5]}],
+        "scenes": [{"nodes": [0, 1, 2, 3, 4, 5, 6]}],
         "nodes": [
             {"name": "leaf", "mesh": 0, "translation": [-0.4, 0.2, 0.3], "rotation": quaternion([0, 1, 0], -35)},
             {"name": "pane", "mesh": 1, "translation": [0.6, 0.1, 1.2]},
@@ -291,8 +292,10 @@ def alpha_cutouts():
             {"name": "floor", "mesh": 3, "translation": [0, -1.3, 0], "scale": [6, 0.2, 4]},
             {"name": "camera", "camera": 0, "translation": [0.3, 0.6, 5.5], "rotation": quaternion([1, 0, 0], -6)},
             {"name": "lamp", "translation": [1.5, 3, 4], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+            {"name": "side", "camera": 1, "translation": [-4.5, 1.2, 3.5], "rotation": quaternion([0, 1, 0], -50)},
         ],
-        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.75, "znear": 0.5, "zfar": 30, "aspectRatio": 1.5}}],
+        "cameras": [{"type": "perspective", "perspective": {"yfov": 0.75, "znear": 0.5, "zfar": 30, "aspectRatio": 1.5}},
+                    {"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.3, "aspectRatio": 1.0}}],
         "meshes": [
             primitive({"POSITION": leaf_quad, "NORMAL": normal, "TEXCOORD_0": uv}, 0),
             primitive({"POSITION": pane_quad, "NORMAL": normal, "TEXCOORD_0": uv}, 1),

@@ -68,10 +68,11 @@ SceneFile mesh_scene_file(MeshData data, const std::filesystem::path& path, cons
 }
 
 // A glTF file's scene: framed and lit by default where the file has no camera or no point light.
-SceneFile gltf_scene_file(std::string_view bytes, const std::filesystem::path& path) {
+SceneFile gltf_scene_file(std::string_view bytes, const std::filesystem::path& path, int camera) {
     SceneFile out;
     out.format = SceneFormat::gltf;
-    const GltfSceneParts parts = read_gltf_scene(bytes, path.string(), gltf_folder_reader(path), out.scene);
+    const GltfSceneParts parts = read_gltf_scene(bytes, path.string(), gltf_folder_reader(path), out.scene, camera);
+    out.cameras = parts.cameras;
     frame_scene(out.scene, !parts.camera, !parts.lights);
     finish_scene_textures(out.scene);
     validate_scene(out.scene);
@@ -81,8 +82,11 @@ SceneFile gltf_scene_file(std::string_view bytes, const std::filesystem::path& p
 }  // namespace
 
 SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path, const SceneLoadOptions& options) {
+    if (is_gltf_file(path)) return gltf_scene_file(text, path, options.camera);
+    if (options.camera != 0)
+        throw InputError(path.string(), 0, 0, "camera " + std::to_string(options.camera) +
+                                                  " asked for: only a glTF file places cameras to choose from");
     if (is_mesh_file(path)) return mesh_scene_file(parse_mesh_file(text, path), path, options);
-    if (is_gltf_file(path)) return gltf_scene_file(text, path);
     const std::string name = path.string();
     const Document document = parse_document(text, name);
     const Node& root = document.root();
@@ -116,7 +120,7 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
 
 SceneFile load_scene_file(const std::filesystem::path& path, const SceneLoadOptions& options) {
     if (is_mesh_file(path)) return mesh_scene_file(load_mesh_file(path), path, options);  // the mesh readers' own caps
-    if (is_gltf_file(path)) return gltf_scene_file(read_file_bytes(path, kMaxGltfFileBytes), path);
+    if (is_gltf_file(path)) return gltf_scene_file(read_file_bytes(path, kMaxGltfFileBytes), path, options.camera);
     return parse_scene_file(read_file_bytes(path, kMaxSceneFileBytes), path, options);
 }
 

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "raster/scene/scene.h"
 
@@ -41,6 +42,8 @@ struct SceneFile {
     Scene scene;
     SceneFormat format = SceneFormat::raster;
     FileRequest request;
+    // glTF: every camera node's name, in the order SceneLoadOptions::camera counts them; empty for other formats.
+    std::vector<std::string> cameras;
 };
 
 // How leniently the files a scene names are read.
@@ -48,6 +51,9 @@ struct SceneLoadOptions {
     // An OBJ's material library or image that cannot be read, or its MTL's nameless newmtl, is an error; without
     // it, a warning, and the model is drawn with default materials or untextured (docs/scene-format.md#meshes).
     bool strict = false;
+    // glTF: the camera node to draw from, in the order the default scene's trees are walked (0 the first; docs/gltf.md).
+    // Another format has one camera: anything but 0 is an error.
+    int camera = 0;
 };
 
 // Loads, validates (validate_scene) and returns a scene file, parsed once. Relative mesh paths are relative to the

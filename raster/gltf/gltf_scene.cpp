@@ -46,9 +46,9 @@ struct Pending {
 
 class ModelReader {
 public:
-    ModelReader(const tinygltf::Model& model, const std::string& file, Scene& scene)
+    ModelReader(const tinygltf::Model& model, const std::string& file, Scene& scene, int camera)
         : model_(model), file_(file), warnings_(file), accessors_(model, file), materials_(model, file, warnings_),
-          scene_(scene) {}
+          scene_(scene), wanted_camera_(camera) {}
 
     GltfSceneParts read();
 
@@ -84,6 +84,7 @@ private:
     GltfMaterials materials_;
     Scene& scene_;
     GltfSceneParts parts_;
+    int wanted_camera_ = 0;  // which camera node the scene is drawn from, in walk order
     bool far_from_bounds_ = false;
     // Every node the walk reaches, as the animation would move it; kept only when the file has an animation.
     SceneAnimation animation_;
@@ -273,7 +274,6 @@ GltfSceneParts ModelReader::read() {
     };
     push_all(roots, "/scenes/" + std::to_string(std::max(0, model_.defaultScene)) + "/nodes", 1, std::make_shared<const Steps>(), -1);
     animated_index_.assign(model_.nodes.size(), -1);  // a node with an index is one the walk has reached
-    bool camera_seen = false;
     while (!stack.empty()) {
         const Pending pending = stack.back();
         stack.pop_back();
@@ -289,14 +289,22 @@ GltfSceneParts ModelReader::read() {
         steps->insert(steps->end(), pending.parent_steps->begin(), pending.parent_steps->end());
         if (node.skin >= 0) warnings_.say(at + ": skins are not applied; the mesh is drawn in its bind pose");
         if (node.mesh >= 0) place_mesh(node.mesh, at, *steps);
-        if (node.camera >= 0 && !camera_seen) {
-            camera_seen = true;
-            place_camera(node.camera, at, *steps);
+        if (node.camera >= 0) {
+            if (static_cast<int>(parts_.cameras.size()) == wanted_camera_) place_camera(node.camera, at, *steps);
+            parts_.cameras.push_back(node.name.empty() ? "camera " + std::to_string(parts_.cameras.size()) : node.name);
         }
         place_light(node, at, *steps);
         push_all(node.children, at + "/children", pending.depth + 1, steps, current_animated_);
     }
     if (placed_triangles_ == 0) fail("/scenes", "the scene places no triangles to draw");
+    if (wanted_camera_ != 0 && wanted_camera_ >= static_cast<int>(parts_.cameras.size())) {
+        std::string list;
+        for (size_t i = 0; i < parts_.cameras.size(); ++i)
+            list += (i ? ", " : "") + std::to_string(i) + " '" + parts_.cameras[i] + "'";
+        fail("/nodes", "there is no camera " + std::to_string(wanted_camera_) + " to draw from; the scene places " +
+                           std::to_string(parts_.cameras.size()) + (parts_.cameras.size() == 1 ? " camera" : " cameras") +
+                           (list.empty() ? "" : ": " + list));
+    }
     if (read_gltf_animation(model_, accessors_, animated_index_, animation_, warnings_)) {
         // Drawn as the animation has it at time 0 (--time poses another instant).
         find_animation_span(animation_);
@@ -325,10 +333,11 @@ bool is_gltf_file(const std::filesystem::path& path) {
     return extension == ".gltf" || extension == ".glb";
 }
 
-GltfSceneParts read_gltf_scene(std::string_view bytes, const std::string& name, const GltfFileReader& files, Scene& scene) {
+GltfSceneParts read_gltf_scene(std::string_view bytes, const std::string& name, const GltfFileReader& files, Scene& scene,
+                               int camera) {
     const tinygltf::Model model = parse_gltf_model(bytes, name, files);
     scene.path = name;
-    return ModelReader(model, name, scene).read();
+    return ModelReader(model, name, scene, camera).read();
 }
 
 }  // namespace raster

@@ -1,6 +1,7 @@
 // `raster view` in headless Chromium (Debian `chromium`, installed by .ci/install): the page, opened with
 // ?selftest=1, clicks #shading-flat, drags the image and turns the wheel over it as DOM events through the handlers
-// a user's input runs, and for an animated scene moves the time slider and plays and pauses. The test does not take the page's word for it: it checks the frames the server logged, with
+// a user's input runs, and for an animated scene with two cameras moves the time slider, plays and pauses, and
+// picks the other camera. The test does not take the page's word for it: it checks the frames the server logged, with
 // their parameters and PNG hashes, that the page showed exactly those bytes, and that the log's hashes are of the
 // bytes the server sends. Skipped, saying so, when Chromium is not installed.
 #include <signal.h>
@@ -24,7 +25,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kTeapot = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/teapot.yaml";
-const std::string kSpinningTeapot = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/spinning_teapot.yaml";
+// Animated, with two cameras.
+const std::string kAlphaCutouts = std::string(RASTER_SOURCE_DIR) + "/corpus/gltf/alpha_cutouts.gltf";
 
 // The DOM of `url` after the page's self-test: Chromium's new headless mode, 20 s of virtual time.
 std::string self_test_dom(const std::string& chromium, const fs::path& work, const std::string& url) {
@@ -152,11 +154,11 @@ TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSe
     EXPECT_EQ(viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << viewer.log();
 }
 
-TEST(ViewerInChromium, theTimeSliderAndPlayPoseAnAnimatedSceneAtTheInstantsTheyAskFor) {
+TEST(ViewerInChromium, theTimeSliderPlayAndTheCameraButtonsAskForTheirFramesAndGetThem) {
     const std::string chromium = find_chromium();
     if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (bash .ci/install installs it)";
     SelfTestRun run;
-    ASSERT_NO_FATAL_FAILURE(run_self_test(chromium, kSpinningTeapot, run));
+    ASSERT_NO_FATAL_FAILURE(run_self_test(chromium, kAlphaCutouts, run));
     const nlohmann::json& frames = run.log["frames"];
     SCOPED_TRACE("page report: " + run.report.dump() + "\nserver log: " + run.log.dump());
     const nlohmann::json state = nlohmann::json::parse(run.viewer.client().Get("/state")->body);
@@ -171,7 +173,8 @@ TEST(ViewerInChromium, theTimeSliderAndPlayPoseAnAnimatedSceneAtTheInstantsTheyA
     EXPECT_NE((*scrubbed)["png_fnv1a64"], frames[(*scrubbed)["index"].get<size_t>() - 1]["png_fnv1a64"]);
     // Playing asked for a new instant each frame (later, or wrapped past the last key to the first), another image.
     std::vector<const nlohmann::json*> played;
-    for (size_t i = (*scrubbed)["index"].get<size_t>() + 1; i < frames.size(); ++i) played.push_back(&frames[i]);
+    for (size_t i = (*scrubbed)["index"].get<size_t>() + 1; i < frames.size() && frames[i]["camera"] == 0; ++i)
+        played.push_back(&frames[i]);
     ASSERT_GE(played.size(), 3u);
     for (size_t i = 1; i < played.size(); ++i) {
         EXPECT_NE((*played[i])["time"].get<double>(), (*played[i - 1])["time"].get<double>()) << i;
@@ -185,6 +188,13 @@ TEST(ViewerInChromium, theTimeSliderAndPlayPoseAnAnimatedSceneAtTheInstantsTheyA
     const httplib::Result again = run.viewer.client().Get(("/render?" + query_of(params)).c_str());
     ASSERT_TRUE(again);
     EXPECT_EQ(fnv1a_hex(again->body), (*scrubbed)["png_fnv1a64"]);
+    // The second camera's button: a frame from camera 1, another image than the frame before it.
+    ASSERT_EQ(state["cameras"]["names"], nlohmann::json::array({"camera", "side"}));
+    const nlohmann::json* side = find_frame(frames, 0, [](const nlohmann::json& f) { return f["camera"] == 1; });
+    ASSERT_NE(side, nullptr) << "no frame was drawn from camera 1";
+    EXPECT_EQ(frames[0]["camera"], 0);
+    EXPECT_NE((*side)["png_fnv1a64"], frames[(*side)["index"].get<size_t>() - 1]["png_fnv1a64"]);
+    EXPECT_NE((*side)["eye"], frames[0]["eye"]);
     EXPECT_EQ(run.report["pass"], true);
     EXPECT_EQ(run.viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << run.viewer.log();
 }

@@ -53,7 +53,7 @@ TEST(ViewerRequests, unknownNamesAndValuesAreRefusedByName) {
               "filter must be nearest, bilinear, trilinear or anisotropic, got 'cubic'");
     EXPECT_EQ(error_of({{"msaa", "true"}}), "msaa must be 0 or 1, got 'true'");
     EXPECT_EQ(error_of({{"zoom", "2"}}),
-              "unknown parameter 'zoom' (known: distance, filter, msaa, pitch, samples, shading, time, yaw)");
+              "unknown parameter 'zoom' (known: camera, distance, filter, msaa, pitch, samples, shading, time, yaw)");
     EXPECT_EQ(error_of({{"yaw", "1"}, {"yaw", "2"}}), "parameter 'yaw' is given more than once");
 }
 
@@ -88,6 +88,12 @@ TEST(ViewerRequests, aTimeIsAFiniteNumberOfSecondsWithinAMillion) {
     EXPECT_EQ(error_of({{"time", "-1000000"}}), "");
     EXPECT_EQ(error_of({{"time", "inf"}}), "time must be a finite number, got 'inf'");
     EXPECT_EQ(error_of({{"time", "2e6"}}), "time must be in [-1e+06, 1e+06] seconds, got '2e6'");
+}
+
+TEST(ViewerRequests, aCameraIsAWholeNumberFromZero) {
+    EXPECT_EQ(parse_view_request({{"camera", "2"}}).request.camera, std::optional<int>(2));
+    EXPECT_EQ(error_of({{"camera", "-1"}}), "camera must be a whole number in [0, 65536], got '-1'");
+    EXPECT_EQ(error_of({{"camera", "1.5"}}), "camera must be a whole number in [0, 65536], got '1.5'");
 }
 
 TEST(ViewerRequests, whatWasSentIsQuotedShortAndPrintable) {

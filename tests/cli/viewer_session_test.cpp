@@ -112,6 +112,37 @@ TEST(ViewerSession, aTimePosesTheAnimatedSceneAsRenderTimeDoesAndAStaticSceneRef
     EXPECT_TRUE(still.state()["animation"].is_null());
 }
 
+TEST(ViewerSession, aCameraRequestDrawsFromThatCameraAsTheFileLoadedWithItDoes) {
+    const std::string model = std::string(RASTER_SOURCE_DIR) + "/corpus/gltf/alpha_cutouts.gltf";
+    SceneFile file = load_scene_file(model);
+    ViewerCameras cameras;
+    cameras.names = file.cameras;
+    int loads = 0;
+    cameras.load = [&](int camera) {
+        ++loads;
+        return load_scene_file(model, {false, camera}).scene;
+    };
+    ASSERT_EQ(cameras.names, (std::vector<std::string>{"camera", "side"}));
+    ViewerSession session(std::move(file.scene), frame_options(), cameras);
+    const Scene side = load_scene_file(model, {false, 1}).scene;
+    const std::vector<uint8_t> rendered = encode_image(render(side, frame_options()).image, ImageFormat::png);
+    ViewRequest from_side;
+    from_side.camera = 1;
+    const ViewerFrame frame = session.render(from_side);
+    EXPECT_TRUE(frame.png == std::string(rendered.begin(), rendered.end()));
+    EXPECT_EQ(frame.record.camera, 1);
+    EXPECT_EQ(frame.record.eye, side.camera.eye);
+    session.render(from_side);
+    EXPECT_EQ(loads, 1);  // each camera loaded once
+    ViewRequest first;
+    first.camera = 0;
+    EXPECT_FALSE(session.render(first).png == frame.png);
+    ViewRequest missing;
+    missing.camera = 2;
+    EXPECT_THROW(session.render(missing), ViewRequestError);
+    EXPECT_EQ(session.state()["cameras"]["names"], nlohmann::json::array({"camera", "side"}));
+}
+
 TEST(ViewerSession, theFilterReachesEveryTexturedMaterial) {
     ViewerSession session(checkered_floor(), frame_options());
     EXPECT_EQ(session.state()["scene_settings"]["filter"], "nearest");

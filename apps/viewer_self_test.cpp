@@ -1,0 +1,102 @@
+// The viewer page's self-test script: clicks, drags, the wheel, the time slider, play and a camera pick, checked.
+#include "apps/viewer_self_test.h"
+
+namespace raster::cli {
+
+const char* viewer_self_test_script() {
+    return R"SCRIPT(// The self-test's animation steps: the slider moved to the middle of the keys, then play pressed until three
+// frames have come, then pause; checks that each asked for its instant and that the instants moved on.
+async function animationSelfTest(report, step, before) {
+  const {start, end} = scene.animation;
+  const middle = (start + end) / 2;
+  const scrubbed = await step('time slider', () => {
+    $('time').value = String(middle);
+    $('time').dispatchEvent(new Event('input', {bubbles: true}));
+  });
+  const played = [];
+  await new Promise((resolve) => {
+    const seen = frames.length;
+    $('play').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
+    const poll = () => {
+      if (frames.length - seen >= 3) {
+        $('play').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
+        played.push(...frames.slice(seen));
+        resolve();
+      } else {
+        setTimeout(poll, 10);
+      }
+    };
+    poll();
+  });
+  await idle();
+  report.steps.push({name: 'play', new_frames: played.length, frame: frames[frames.length - 1]});
+  const times = played.map((frame) => Number(frame.params.time));
+  report.checks = {
+    slider_asked_for_its_instant: Math.abs(Number(scrubbed.params.time) - middle) < 0.01,
+    slider_changed_the_image: scrubbed.hash !== before.hash,
+    play_advanced_the_instant: times.length >= 3 && times.every((t, i) => i === 0 || t !== times[i - 1]),
+    pause_stopped_playing: !playing && $('play').getAttribute('aria-pressed') === 'false',
+  };
+}
+
+// The self-test (?selftest=1): a user's click, drag and wheel, as DOM events through the handlers above, each
+// followed by the frame it brought; the report says what each frame asked for and the hash of the bytes shown.
+async function runSelfTest() {
+  const report = {steps: []};
+  try {
+    await idle();
+    const step = async (name, act) => {
+      const before = frames.length;
+      act();
+      await idle();
+      const frame = frames[frames.length - 1];
+      report.steps.push({name, new_frames: frames.length - before, frame});
+      return frame;
+    };
+    const first = await step('initial', () => {});
+    const flat = await step('click shading-flat', () =>
+      $('shading-flat').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window})));
+    const box = image.getBoundingClientRect();
+    const centre = {clientX: box.left + box.width / 2, clientY: box.top + box.height / 2};
+    const pointer = (type, dx, dy) => image.dispatchEvent(new PointerEvent(type, {
+      bubbles: true, cancelable: true, pointerId: 1, pointerType: 'mouse', isPrimary: true, button: 0,
+      buttons: type === 'pointerup' ? 0 : 1, clientX: centre.clientX + dx, clientY: centre.clientY + dy}));
+    const dragged = await step('drag', () => {
+      pointer('pointerdown', 0, 0);
+      pointer('pointermove', 60, 25);
+      pointer('pointerup', 60, 25);
+    });
+    const zoomed = await step('wheel', () => image.dispatchEvent(new WheelEvent('wheel', {
+      bubbles: true, cancelable: true, deltaY: 300, ...centre})));
+    if (scene.animation) await animationSelfTest(report, step, zoomed);
+    if (scene.cameras.length > 1) {
+      const other = scene.loadedCamera === 0 ? 1 : 0;
+      const before = frames[frames.length - 1];
+      const picked = await step('pick a camera', () => $(`camera-pick-${other}`).dispatchEvent(
+        new MouseEvent('click', {bubbles: true, cancelable: true, view: window})));
+      report.checks = {...report.checks, camera_asked_for: picked.params.camera === String(other),
+                       camera_changed_the_image: picked.hash !== before.hash};
+    }
+    report.checks = {
+      ...report.checks,
+      flat_asked_for: flat.params.shading === 'flat',
+      flat_changed_the_image: flat.hash !== first.hash,
+      drag_moved_the_camera: flat.params.yaw !== dragged.params.yaw && flat.params.pitch !== dragged.params.pitch,
+      drag_changed_the_image: dragged.hash !== flat.hash,
+      drag_kept_the_shading: dragged.params.shading === 'flat',
+      wheel_moved_the_camera_back: Number(zoomed.params.distance) > Number(dragged.params.distance),
+      wheel_changed_the_image: zoomed.hash !== dragged.hash,
+    };
+    report.pass = Object.values(report.checks).every(Boolean);
+  } catch (error) {
+    report.error = String(error);
+    report.pass = false;
+  }
+  $('selftest').textContent = JSON.stringify(report);
+  $('selftest').hidden = false;
+  document.body.dataset.selftest = report.pass ? 'pass' : 'fail';
+}
+)SCRIPT";
+}
+
+}  // namespace raster::cli
