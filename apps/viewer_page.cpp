@@ -60,7 +60,7 @@ const SHADINGS = ['flat', 'gouraud', 'phong', 'blinn-phong', 'cel', 'gooch', 'un
 const SAMPLES = [1, 4, 16];
 const FILTERS = ['nearest', 'bilinear', 'trilinear', 'anisotropic'];
 const DEGREES_PER_PIXEL = 0.4;  // of drag
-const MIN_PLAY_STEP = 1 / 30;  // seconds of animation a played frame advances at least, however fast it came
+const MIN_PLAY_STEP = 1 / 30;  // seconds: a played frame's least step, and the least wall time between two
 const ZOOM_PER_100_WHEEL = 1.1;  // distance factor per 100 units of wheel delta
 const selftest = new URLSearchParams(location.search).get('selftest') === '1';
 const $ = (id) => document.getElementById(id);
@@ -130,6 +130,7 @@ async function renderLoop() {
       const response = await fetch('/render?' + new URLSearchParams(params), {cache: 'no-store'});
       if (!response.ok) {
         showStatus(`the server refused the frame (${response.status}): ${await response.text()}`);
+        if (playing) setPlaying(false);
         continue;
       }
       const bytes = new Uint8Array(await response.arrayBuffer());
@@ -144,16 +145,22 @@ async function renderLoop() {
       showStatus('');
     } catch (error) {
       showStatus(`the frame could not be fetched: ${error}`);
+      if (playing) setPlaying(false);
     }
   }
   rendering = false;
-  if (playing) return advancePlay();
+  if (playing) {
+    // The next instant once 1/30 s has passed since this one was asked for: real time, never faster.
+    setTimeout(() => { if (playing) advancePlay(); }, Math.max(0, playedAt + 1000 * MIN_PLAY_STEP - performance.now()));
+    return;
+  }
   const waiters = idleWaiters;
   idleWaiters = [];
   waiters.forEach((resolve) => resolve());
 }
 
 // Playing: the next instant, by the wall time since the last (at least MIN_PLAY_STEP), wrapping at the last key.
+// Until the page first asks for an instant it shows the scene as loaded, taken as the first key.
 function advancePlay() {
   const now = performance.now();
   const {start, end} = scene.animation;

@@ -73,13 +73,15 @@ void ViewerSession::use_camera(int index, Scene& frame) {
     if (index >= count || !cameras_.load)
         throw ViewRequestError("camera " + std::to_string(index) + ": the scene places " + std::to_string(count) +
                                (count == 1 ? " camera" : " cameras"));
+    if (const auto failed = camera_failures_.find(index); failed != camera_failures_.end())
+        throw ViewRequestError(failed->second);  // not read again for every frame that asks
     auto found = camera_views_.find(index);
     if (found == camera_views_.end()) {
         Scene loaded;
         try {
             loaded = cameras_.load(index);
         } catch (const std::exception& e) {
-            throw ViewRequestError("camera " + std::to_string(index) + ": " + e.what());
+            throw ViewRequestError(camera_failures_[index] = "camera " + std::to_string(index) + ": " + e.what());
         }
         found = camera_views_.emplace(index, CameraView{loaded.camera, loaded.settings.width, loaded.settings.height,
                                                         loaded.animation}).first;

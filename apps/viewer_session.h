@@ -96,6 +96,7 @@ private:
     const Scene scene_;
     const ViewerCameras cameras_;
     std::map<int, CameraView> camera_views_;
+    std::map<int, std::string> camera_failures_;  // the cameras whose load failed, with the message
     const RenderOptions options_;
     std::map<TextureFilter, Scene> filtered_scenes_;
     RenderResult buffers_;  // reused from frame to frame

@@ -17,7 +17,7 @@
 namespace raster::harness {
 
 // What a scene must have for a mode to change anything: a texture filter needs textures, a shadow map setting a
-// light that casts shadows, a transparency mode a material with opacity below 1, a lighting rate Phong or
+// light that casts shadows, a transparency mode a blended material (is_blended), a lighting rate Phong or
 // Blinn-Phong shading.
 enum class ModeNeeds { nothing, textures, shadows, transparency, per_sample_lighting };
 

@@ -36,8 +36,8 @@ void collect_hit(const RTCFilterFunctionNArguments* args) {
 
 SampleLayers trace_layers(const Scene& scene, const OracleScene& geometry, const OracleOptions& options) {
     SampleLayers out;
-    if (!has_transparency(scene)) return out;
     std::vector<uint32_t> transparent = traced_triangles(scene, geometry, Surfaces::transparent);
+    if (transparent.empty()) return out;  // no layers: the oracle's own test (layered_material), not raster's
     const RenderSettings& settings = scene.settings;
     const int threads = options.threads > 0 ? options.threads : default_thread_count();
     EmbreeDevice& device = embree_device_for(threads);

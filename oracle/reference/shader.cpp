@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace raster::oracle {
@@ -235,7 +236,8 @@ Interval OracleShader::opacity(uint32_t id, const Interval3& bary) const {
     const Material& material = material_of(id);
     if (!material.texture || !material.texture->reads_alpha || !textures_) return Interval(material.opacity);
     Interval alpha = Interval(material.opacity) * textures_->alpha_at(id, material, bary);
-    alpha = alpha.widened(float_gamma(1) * alpha.magnitude());
+    // The product's rounding: relative, or a float subnormal's absolute step where it underflows.
+    alpha = alpha.widened(float_gamma(1) * alpha.magnitude() + std::numeric_limits<float>::denorm_min());
     if (!material.alpha_cutoff) return alpha;
     const double cutoff = *material.alpha_cutoff;
     if (alpha.lo >= cutoff) return Interval(1.0);

@@ -67,6 +67,13 @@ SceneFile mesh_scene_file(MeshData data, const std::filesystem::path& path, cons
     return out;
 }
 
+// Any camera but the first asked of a file that has one camera (every format but glTF) is an error.
+void refuse_camera_choice(const std::filesystem::path& path, const SceneLoadOptions& options) {
+    if (options.camera != 0 && !is_gltf_file(path))
+        throw InputError(path.string(), 0, 0, "camera " + std::to_string(options.camera) +
+                                                  " asked for: only a glTF file places cameras to choose from");
+}
+
 // A glTF file's scene: framed and lit by default where the file has no camera or no point light.
 SceneFile gltf_scene_file(std::string_view bytes, const std::filesystem::path& path, int camera) {
     SceneFile out;
@@ -82,10 +89,8 @@ SceneFile gltf_scene_file(std::string_view bytes, const std::filesystem::path& p
 }  // namespace
 
 SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& path, const SceneLoadOptions& options) {
+    refuse_camera_choice(path, options);
     if (is_gltf_file(path)) return gltf_scene_file(text, path, options.camera);
-    if (options.camera != 0)
-        throw InputError(path.string(), 0, 0, "camera " + std::to_string(options.camera) +
-                                                  " asked for: only a glTF file places cameras to choose from");
     if (is_mesh_file(path)) return mesh_scene_file(parse_mesh_file(text, path), path, options);
     const std::string name = path.string();
     const Document document = parse_document(text, name);
@@ -119,6 +124,7 @@ SceneFile parse_scene_file(std::string_view text, const std::filesystem::path& p
 }
 
 SceneFile load_scene_file(const std::filesystem::path& path, const SceneLoadOptions& options) {
+    refuse_camera_choice(path, options);
     if (is_mesh_file(path)) return mesh_scene_file(load_mesh_file(path), path, options);  // the mesh readers' own caps
     if (is_gltf_file(path)) return gltf_scene_file(read_file_bytes(path, kMaxGltfFileBytes), path, options.camera);
     return parse_scene_file(read_file_bytes(path, kMaxSceneFileBytes), path, options);

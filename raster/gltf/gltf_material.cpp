@@ -91,7 +91,7 @@ std::optional<GltfUvTransform> GltfMaterials::read_uv_transform(const tinygltf::
 }
 
 std::shared_ptr<const Texture> GltfMaterials::decode(const std::string& encoded, const std::string& name,
-                                                     TextureChannels channels, int image) {
+                                                     TextureChannels channels, int image, const std::string& outcome) {
     try {
         auto decoded = std::make_shared<const Texture>(decode_texture(encoded, name, channels));
         const TextureLevel& level = decoded->levels.front();
@@ -100,8 +100,8 @@ std::shared_ptr<const Texture> GltfMaterials::decode(const std::string& encoded,
             throw InputError("the model's images hold more than " + std::to_string(kMaxGltfTexels) + " texels");
         return decoded;
     } catch (const InputError& e) {
-        warnings_.say("/images/" + std::to_string(image) + " cannot be decoded (" + e.message() +
-                      "); the textures using it are left out");
+        warnings_.say("/images/" + std::to_string(image) + (channels == TextureChannels::alpha ? "'s alpha" : "") +
+                      " cannot be decoded (" + e.message() + ")" + outcome);
         return nullptr;
     }
 }
@@ -138,13 +138,19 @@ std::optional<TextureBinding> GltfMaterials::base_color_texture(const tinygltf::
         if (encoded_bytes_ > kMaxGltfExternalBytes)
             throw InputError(file_, 0, 0, "/images/" + std::to_string(texture.source) + ": the model's images hold more than " +
                                               std::to_string(kMaxGltfExternalBytes) + " encoded bytes");
-        if (!image.encoded->empty()) image.colour = decode(*image.encoded, binding.path, TextureChannels::colour, texture.source);
+        if (!image.encoded->empty())
+            image.colour = decode(*image.encoded, binding.path, TextureChannels::colour, texture.source,
+                                  "; the textures using it are left out");
     }
     if (!image.colour) return std::nullopt;
     binding.texture = image.colour;
     binding.encoded = image.encoded;
     if (reads_alpha && image_has_alpha(*image.encoded)) {
-        if (!image.alpha) image.alpha = decode(*image.encoded, binding.path, TextureChannels::alpha, texture.source);
+        if (!image.alpha_tried) {
+            image.alpha_tried = true;
+            image.alpha = decode(*image.encoded, binding.path, TextureChannels::alpha, texture.source,
+                                 "; BLEND and MASK use the base colour factor's alpha alone");
+        }
         binding.reads_alpha = image.alpha != nullptr;
         binding.alpha_texture = image.alpha;
     }
@@ -186,13 +192,15 @@ const GltfMaterial& GltfMaterials::at(int index, const std::string& use) {
         throw InputError(file_, 0, 0, at + "/alphaMode: '" + m.alphaMode + "' is not OPAQUE, MASK or BLEND");
     if (mask && !(std::isfinite(m.alphaCutoff) && m.alphaCutoff >= 0.0))
         throw InputError(file_, 0, 0, at + "/alphaCutoff: must be a finite number at least 0");
-    material.texture = base_color_texture(pbr.baseColorTexture, pbr_at + "/baseColorTexture", blend || mask, out.uv_transform);
-    // The alpha is the factor's times the texture's where the image has alpha (docs/gltf.md#materials). A cut-out
-    // whose factor is below the cut-off is cut everywhere; without texture alpha, one at or above it is opaque.
+    // A cut-out whose factor is below its cut-off is cut everywhere: its texture is not read.
+    if (mask) out.cut_away = alpha < m.alphaCutoff;
+    if (!out.cut_away)
+        material.texture = base_color_texture(pbr.baseColorTexture, pbr_at + "/baseColorTexture", blend || mask, out.uv_transform);
+    // The alpha is the factor's times the texture's where the image has alpha (docs/gltf.md#materials); a cut-out
+    // without texture alpha whose factor reaches the cut-off is opaque.
     const bool texture_alpha = material.texture && material.texture->reads_alpha;
     if (blend || (mask && texture_alpha)) material.opacity = static_cast<float>(alpha);
     if (mask && texture_alpha) material.alpha_cutoff = static_cast<float>(m.alphaCutoff);
-    if (mask) out.cut_away = alpha < m.alphaCutoff;
     if (pbr.metallicRoughnessTexture.index >= 0 || m.normalTexture.index >= 0 || m.occlusionTexture.index >= 0 ||
         m.emissiveTexture.index >= 0)
         warnings_.say(at + ": metallic-roughness, normal, occlusion and emissive textures are not read");

@@ -49,9 +49,10 @@ private:
     // The texture; with `reads_alpha` (BLEND, MASK) and an image that has alpha, its alpha decoded too.
     std::optional<TextureBinding> base_color_texture(const tinygltf::TextureInfo& info, const std::string& at,
                                                      bool reads_alpha, std::optional<GltfUvTransform>& uv_transform);
-    // The image's channels decoded within the model's texel cap; null, with a warning, when they cannot be.
+    // The image's channels decoded within the model's texel cap; null, with a warning that ends with `outcome`
+    // (what becomes of the material), when they cannot be.
     std::shared_ptr<const Texture> decode(const std::string& encoded, const std::string& name, TextureChannels channels,
-                                          int image);
+                                          int image, const std::string& outcome);
     // The extension's transform; nothing when it names a texture coordinate set other than 0 (then the caller
     // leaves the texture out, as for any other set).
     std::optional<GltfUvTransform> read_uv_transform(const tinygltf::Value& extension, const std::string& at) const;
@@ -63,6 +64,7 @@ private:
     struct GltfImage {
         std::shared_ptr<const std::string> encoded;
         std::shared_ptr<const Texture> colour, alpha;  // alpha decoded only when a BLEND or MASK material reads it
+        bool alpha_tried = false;                      // once, whether or not it decoded
     };
     std::map<int, GltfImage> images_;
     uint64_t decoded_texels_ = 0, encoded_bytes_ = 0;

@@ -62,13 +62,15 @@ TEST(GltfCameras, aCameraTheFileDoesNotPlaceIsRefusedWithTheList) {
 }
 
 TEST(GltfCameras, aSceneFormatWithOneCameraRefusesAnyOtherChoice) {
-    const std::string teapot = std::string(RASTER_SOURCE_DIR) + "/corpus/scenes/teapot.yaml";
-    EXPECT_NO_THROW(load_scene_file(teapot, {false, 0}));
-    try {
-        load_scene_file(teapot, {false, 1});
-        FAIL() << "a camera was chosen in a raster scene";
-    } catch (const InputError& e) {
-        EXPECT_EQ(e.message(), "camera 1 asked for: only a glTF file places cameras to choose from");
+    for (const char* file : {"/corpus/scenes/teapot.yaml", "/corpus/meshes/teapot.obj"}) {
+        const std::string path = std::string(RASTER_SOURCE_DIR) + file;
+        EXPECT_NO_THROW(load_scene_file(path, {false, 0})) << file;
+        try {
+            load_scene_file(path, {false, 1});
+            ADD_FAILURE() << "a camera was chosen in " << file;
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.message(), "camera 1 asked for: only a glTF file places cameras to choose from") << file;
+        }
     }
 }
 
