@@ -8,34 +8,30 @@
 #include "raster/transform/model_matrix.h"
 
 namespace raster::properties {
-namespace {
 
-// Nine significant digits read back to the same float.
-std::string number(float value) {
+std::string yaml_number(float value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.9g", static_cast<double>(value));
     return text;
 }
 
-std::string vector(const glm::vec3& v) {
+std::string yaml_vector(const glm::vec3& v) {
     char text[128];  // formatted in one go: g++ 12 warns falsely (-Wrestrict) on "literal" + std::string&&
     std::snprintf(text, sizeof text, "[%.9g, %.9g, %.9g]", static_cast<double>(v.x), static_cast<double>(v.y),
                   static_cast<double>(v.z));
     return text;
 }
 
-}  // namespace
-
 std::string scene_file_with_chain(const ScaleRotateTranslate& chain, const std::array<glm::vec3, 3>& triangle,
                                   const std::string& preamble) {
     return preamble +
            "meshes:\n"
-           "  - vertices: [" + vector(triangle[0]) + ", " + vector(triangle[1]) + ", " + vector(triangle[2]) + "]\n"
+           "  - vertices: [" + yaml_vector(triangle[0]) + ", " + yaml_vector(triangle[1]) + ", " + yaml_vector(triangle[2]) + "]\n"
            "    faces: [[0, 1, 2]]\n"
            "    transform:\n"
-           "      - scale: " + vector(chain.scale) + "\n"
-           "      - rotate: {angle: " + number(chain.degrees) + ", axis: " + vector(chain.axis) + "}\n"
-           "      - translate: " + vector(chain.offset) + "\n";
+           "      - scale: " + yaml_vector(chain.scale) + "\n"
+           "      - rotate: {angle: " + yaml_number(chain.degrees) + ", axis: " + yaml_vector(chain.axis) + "}\n"
+           "      - translate: " + yaml_vector(chain.offset) + "\n";
 }
 
 glm::mat4 model_matrix_from_scene_file(const ScaleRotateTranslate& chain) {

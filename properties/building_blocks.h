@@ -21,6 +21,10 @@ struct ScaleRotateTranslate {
     glm::vec3 offset{0.0f};
 };
 
+// A float as a scene file writes it, nine significant digits, so that it reads back exactly; a vector likewise.
+std::string yaml_number(float value);
+std::string yaml_vector(const glm::vec3& v);
+
 // A raster scene file: `preamble` (image, camera, render settings), then one mesh of one triangle listing the
 // chain's three steps as its transform, every float printed so that it reads back exactly.
 std::string scene_file_with_chain(const ScaleRotateTranslate& chain, const std::array<glm::vec3, 3>& triangle,

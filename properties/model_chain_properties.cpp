@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "properties/chain_reference.h"
 #include "properties/failure.h"
 #include "properties/generators/primitives.h"
 #include "properties/printing.h"
@@ -19,16 +20,7 @@
 namespace raster::properties {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr int kSide = 64;            // the frame, in pixels
-constexpr double kEyeZ = 8.0;        // the camera at (0, 0, 8) looks at the origin, up +y
-constexpr double kFovDegrees = 45.0;
-
-// The scene's preamble: the frame, the camera and unlit shading (the check reads coverage only).
-const char* const kPreamble =
-    "image: {width: 64, height: 64}\n"
-    "camera: {eye: [0, 0, 8], target: [0, 0, 0], up: [0, 1, 0], fov: 45, near: 1, far: 100}\n"
-    "render: {shading: unlit}\n";
+constexpr int kSide = kChainFrameSide;
 
 // How far a covered sample may sit from an edge of the exact projected triangle and still differ from it: each
 // snapped vertex is within half a snap step (2^-9 px at the default 8 bits) of its float position in x and y, and
@@ -72,43 +64,16 @@ Gen<ChainCase> chain_cases() {
     });
 }
 
-// The chain in double: scale, then the rotation by Rodrigues' formula, then the offset.
-glm::dvec3 moved(const ChainCase& c, const glm::vec3& object) {
-    const glm::dvec3 p = glm::dvec3(object) * glm::dvec3(c.chain.scale);
-    const glm::dvec3 k = glm::normalize(glm::dvec3(c.chain.axis));
-    const double radians = static_cast<double>(c.chain.degrees) * kPi / 180.0;
-    const double cosine = std::cos(radians), sine = std::sin(radians);
-    const glm::dvec3 rotated = p * cosine + glm::cross(k, p) * sine + k * (glm::dot(k, p) * (1.0 - cosine));
-    return rotated + glm::dvec3(c.chain.offset);
-}
-
-// The documented camera and viewport (conventions.h): view = world - eye, NDC = focal (x, y) / -z_view, screen
-// x = (ndc_x + 1) W / 2, y = (1 - ndc_y) H / 2.
-glm::dvec2 screen_of(const glm::dvec3& world) {
-    const double focal = 1.0 / std::tan(kFovDegrees * kPi / 360.0);
-    const double depth = kEyeZ - world.z;  // -z_view, over 4 here
-    const double ndc_x = focal * world.x / depth, ndc_y = focal * world.y / depth;
-    return {(ndc_x + 1.0) * 0.5 * kSide, (1.0 - ndc_y) * 0.5 * kSide};
-}
-
-// The signed distance of p from the line a -> b, positive on the triangle's inside for a counter-clockwise
-// (on screen) vertex order.
-double signed_distance(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& p) {
-    const glm::dvec2 edge = b - a;
-    const double length = glm::length(edge);
-    return length > 0.0 ? (edge.x * (p.y - a.y) - edge.y * (p.x - a.x)) / length : 0.0;
-}
-
 }  // namespace
 
 // With culling off, the loaded and rendered triangle covers a sample exactly when the exact one does, at every
 // sample at least kEdgeBand from each of its edges.
 RASTER_DRAWING_PROPERTY(ModelMatrix, sceneFileChainPlacesTheTriangleWhereTheChainSays) {
     const ChainCase c = *chain_cases();
-    const Scene scene = parse_scene(scene_file_with_chain(c.chain, c.triangle, kPreamble), "chain.yaml");
+    const Scene scene = parse_scene(scene_file_with_chain(c.chain, c.triangle, kChainFramePreamble), "chain.yaml");
     const RenderResult result = render_with(impl, scene);
     std::array<glm::dvec2, 3> screen;
-    for (int i = 0; i < 3; ++i) screen[i] = screen_of(moved(c, c.triangle[i]));
+    for (int i = 0; i < 3; ++i) screen[i] = chain_frame_screen_of(chain_moved(c.chain, glm::dvec3(c.triangle[i])));
     const double area2 = signed_distance(screen[0], screen[1], screen[2]) * glm::length(screen[1] - screen[0]);
     RC_PRE(std::fabs(area2) > 1.0);  // edge-on: nothing to compare
     if (area2 < 0.0) std::swap(screen[1], screen[2]);
