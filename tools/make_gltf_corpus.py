@@ -16,7 +16,9 @@
   outside the leaf, 255 inside and graded across a two-texel rim) swinging on LINEAR rotation keys, a pane whose alpha
   runs from 0.15 to 0.9 across it (BLEND, base colour factor alpha 0.8) in front of it, an opaque back wall and
   floor; images in data URIs, trilinear filtering, a point light and two cameras (the second, "side", square and
-  without zfar, for --camera 1).
+  without zfar, for --camera 1); the same model with its buffer and images in files beside it
+  (alpha_cutouts_external.gltf, alpha_cutouts.bin, alpha_cutouts_leaf.png, alpha_cutouts_pane.png) and as a GLB
+  with the images in its binary chunk (alpha_cutouts.glb), which must render the same bytes.
 """
 import base64
 import json
@@ -82,6 +84,15 @@ def box(buffer):
             indices += [base + i for i in quad]
     return {"POSITION": buffer.accessor("f", positions, FLOAT, "VEC3", bounds=True),
             "NORMAL": buffer.accessor("f", normals, FLOAT, "VEC3")}, buffer.accessor("H", indices, USHORT, "SCALAR")
+
+
+def write_glb(name, document, data):
+    """A GLB: the 12-byte header, the JSON chunk padded with spaces, the binary chunk (already 4-byte aligned)."""
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    chunks = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(data), 0x004E4942) + data
+    with open(os.path.join(OUT, name), "wb") as f:
+        f.write(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
 
 
 def write_json(name, document):
@@ -164,11 +175,7 @@ def textured_quad():
         "bufferViews": buffer.views,
         "accessors": buffer.accessors,
     }
-    text = json.dumps(document).encode()
-    text += b" " * (-len(text) % 4)
-    chunks = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(buffer.data), 0x004E4942) + buffer.data
-    with open(os.path.join(OUT, "textured_quad.glb"), "wb") as f:
-        f.write(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
+    write_glb("textured_quad.glb", document, buffer.data)
 
 
 def strip_fan_colors():
@@ -280,7 +287,8 @@ def alpha_cutouts():
     material = lambda name, colour, **more: dict({"name": name, "pbrMetallicRoughness": dict(
         {"baseColorFactor": colour, "metallicFactor": 0, "roughnessFactor": 0.6}, **more.pop("pbr", {}))}, **more)
     primitive = lambda attributes, mat: {"primitives": [{"attributes": attributes, "indices": indices, "material": mat}]}
-    write_json("alpha_cutouts.gltf", {
+    pngs = [png_rgba(64, 64, leaf_texel), png_rgba(32, 32, pane_texel)]
+    document = {
         "asset": {"version": "2.0", "generator": "tools/make_gltf_corpus.py"},
         "extensionsUsed": ["KHR_lights_punctual"],
         "extensions": {"KHR_lights_punctual": {"lights": [{"type": "point", "color": [1, 1, 0.95], "intensity": 30}]}},
@@ -309,14 +317,36 @@ def alpha_cutouts():
             material("floor", [0.45, 0.5, 0.45, 1]),
         ],
         "textures": [{"source": 0}, {"source": 1}],
-        "images": [image(png_rgba(64, 64, leaf_texel)), image(png_rgba(32, 32, pane_texel))],
+        "images": [image(png) for png in pngs],
         "animations": [{"name": "swing", "channels": [{"sampler": 0, "target": {"node": 0, "path": "rotation"}}],
                         "samplers": [{"input": swing_in, "output": swing_out, "interpolation": "LINEAR"}]}],
         "buffers": [{"uri": "data:application/octet-stream;base64," + base64.b64encode(buffer.data).decode(),
                      "byteLength": len(buffer.data)}],
         "bufferViews": buffer.views,
         "accessors": buffer.accessors,
-    })
+    }
+    write_json("alpha_cutouts.gltf", document)
+    # The same model with its buffer and images in files of their own beside it.
+    external = dict(document, buffers=[{"uri": "alpha_cutouts.bin", "byteLength": len(buffer.data)}],
+                    images=[{"uri": "alpha_cutouts_%s.png" % name} for name in ("leaf", "pane")])
+    write_json("alpha_cutouts_external.gltf", external)
+    with open(os.path.join(OUT, "alpha_cutouts.bin"), "wb") as f:
+        f.write(buffer.data)
+    for name, png in zip(("leaf", "pane"), pngs):
+        with open(os.path.join(OUT, "alpha_cutouts_%s.png" % name), "wb") as f:
+            f.write(png)
+    # And as a GLB: the images in buffer views of the binary chunk, the one buffer without a uri.
+    views = [dict(v) for v in buffer.views]
+    data = buffer.data
+    images = []
+    for png in pngs:
+        data += b"\0" * (-len(data) % 4)
+        views.append({"buffer": 0, "byteOffset": len(data), "byteLength": len(png)})
+        images.append({"bufferView": len(views) - 1, "mimeType": "image/png"})
+        data += png
+    data += b"\0" * (-len(data) % 4)
+    write_glb("alpha_cutouts.glb", dict(document, buffers=[{"byteLength": len(data)}], bufferViews=views, images=images),
+              data)
 
 
 if __name__ == "__main__":

@@ -1,10 +1,11 @@
 // A glTF file on the command line: `raster render model.gltf` and `model.glb` draw it at its camera's aspect ratio
-// and where its nodes put it; a hostile file is an error (exit 2) naming the file and the JSON path of the problem,
+// and where its nodes put it, the same bytes whether its buffers and images are files, data URIs or GLB chunks; a hostile file is an error (exit 2) naming the file and the JSON path of the problem,
 // and one that names a file outside its folder is refused without reading it.
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -45,6 +46,27 @@ TEST(GltfCli, aGlbWithItsEmbeddedTextureRenders) {
         if (seen.find(pixel) == std::string::npos) seen += pixel, ++distinct;
     }
     EXPECT_GE(distinct, 2u);
+}
+
+TEST(GltfCli, aGltfWithFilesAGlbAndAnEmbeddedCopyOfOneModelRenderTheSameBytes) {
+    // corpus/gltf/alpha_cutouts: data URIs (.gltf), a buffer and images in files beside it (_external.gltf), and a
+    // GLB with its images in the binary chunk; animated, textured with alpha, two cameras.
+    TempDir dir;
+    for (const std::vector<std::string>& flags :
+         {std::vector<std::string>{"--time", "0.6", "--samples", "4"}, std::vector<std::string>{"--camera", "1", "--time", "1.7"}}) {
+        std::vector<std::string> images;
+        for (const char* model : {"alpha_cutouts.gltf", "alpha_cutouts_external.gltf", "alpha_cutouts.glb"}) {
+            const std::filesystem::path image = dir / (std::string(model) + ".png");
+            std::vector<std::string> args = {"render", (kSource / "corpus/gltf" / model).string(), "-o", image.string()};
+            args.insert(args.end(), flags.begin(), flags.end());
+            const auto run = run_raster(args);
+            ASSERT_EQ(run.code, 0) << model << ": " << run.err;
+            images.push_back(read_file(image));
+        }
+        ASSERT_GT(images[0].size(), 1000u);
+        EXPECT_TRUE(images[1] == images[0]) << "the model with its files beside it renders other bytes, " << flags[0];
+        EXPECT_TRUE(images[2] == images[0]) << "the GLB renders other bytes, " << flags[0];
+    }
 }
 
 TEST(GltfCli, aHostileFileIsAnErrorNamingTheFileAndTheJsonPath) {
