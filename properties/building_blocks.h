@@ -1,5 +1,5 @@
 // The building blocks that the properties do not take through StageFunctions (matrix builders, the loader's
-// transform chain), as replaceable functions with the real ones as defaults, so checks can take them as parameters.
+// transform chain, keyframe sampling), as replaceable functions with the real ones as defaults, so checks can take them as parameters.
 #pragma once
 
 #include <array>
@@ -9,6 +9,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "raster/scene/animation.h"
 #include "raster/transform/transform.h"
 
 namespace raster::properties {
@@ -45,6 +46,10 @@ struct BuildingBlocks {
     glm::mat4 (*viewport)(int width, int height) = viewport_matrix;
     glm::mat3 (*normal_matrix)(const glm::mat4& model) = raster::normal_matrix;
     glm::mat4 (*model_matrix)(const ScaleRotateTranslate& chain) = model_matrix_from_scene_file;
+    // Keyframe sampling (raster/scene/animation.h), which the animation properties call.
+    glm::vec4 (*slerp)(const glm::vec4& a, const glm::vec4& b, float t) = raster::slerp;
+    glm::vec3 (*sample_positions)(const Track<glm::vec3>& track, float time) = raster::sample_track;
+    glm::vec4 (*sample_rotations)(const Track<glm::vec4>& track, float time) = raster::sample_track;
 };
 
 }  // namespace raster::properties

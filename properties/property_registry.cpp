@@ -14,7 +14,7 @@ namespace {
 // from build to build. A new suite is added here.
 const char* const kSuiteOrder[] = {
     "Watertight", "Coverage", "FillRule", "Barycentrics", "Depth", "ViewMatrix", "Projection", "Matrices",
-    "ModelMatrix", "Instancing", "PrimitiveModes", "NormalMatrix", "Clip", "Sampling", "Extremes", "Lighting", "MipChain", "Wrap", "Trilinear",
+    "ModelMatrix", "Instancing", "PrimitiveModes", "Animation", "NormalMatrix", "Clip", "Sampling", "Extremes", "Lighting", "MipChain", "Wrap", "Trilinear",
     "LevelOfDetail", "Texture", "Shadow", "Transparency",
 };
 

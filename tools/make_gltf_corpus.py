@@ -214,9 +214,10 @@ def animated_box():
     buffer = Buffer()
     box_attributes, box_indices = box(buffer)
     times = lambda values: buffer.accessor("f", values, FLOAT, "SCALAR", bounds=False)
-    # Rotation: LINEAR quarter turns about a tilted axis (x, y, z, w as glTF writes them).
+    # Rotation: LINEAR keys 150 degrees apart about a tilted axis (x, y, z, w as glTF writes them): under half a
+    # turn, so the short way is the way the keys go, and wide enough that normalised lerp would lag slerp by degrees.
     rotation_in = times([0, 1, 2, 3])
-    rotation_out = buffer.accessor("f", [quaternion([0.3, 1, 0], a) for a in (0, 90, 180, 270)], FLOAT, "VEC4")
+    rotation_out = buffer.accessor("f", [quaternion([0.3, 1, 0], a) for a in (0, 150, 300, 450)], FLOAT, "VEC4")
     # Translation: CUBICSPLINE, each key an in-tangent, a value and an out-tangent.
     translation_in = times([0, 1.5, 3])
     translation_out = buffer.accessor("f", [[0, 0, 0], [-1, 0, 0], [0, 2, 0],
