@@ -70,15 +70,10 @@ glm::dmat4 product_bound(const glm::dmat4& s, const glm::dmat4& step_bound, cons
     return out;
 }
 
-// The chain's exact product and raster's bound.
 ModelMatrixError chain_error(const std::vector<TransformStep>& steps) {
-    ModelMatrixError chain;
-    for (const TransformStep& step : steps) {
-        const glm::dmat4 s = oracle_step_matrix(step);
-        chain.bound = product_bound(s, step_error(step, s), chain.exact, chain.bound);
-        chain.exact = s * chain.exact;
-    }
-    return chain;
+    std::vector<StepError> errors;
+    for (const TransformStep& step : steps) errors.push_back(raster_step_error(step));
+    return raster_chain_error(errors);
 }
 
 // The permanent of the 3 x 3 minor of non-negative `m` without column `skip_c` and row `skip_r`: the sum of the
@@ -133,6 +128,20 @@ InverseInputError<Matrix> inverse_input_error_of(const Matrix& exact, const Matr
 }
 
 }  // namespace
+
+StepError raster_step_error(const TransformStep& step) {
+    const glm::dmat4 exact = oracle_step_matrix(step);
+    return {exact, step_error(step, exact)};
+}
+
+ModelMatrixError raster_chain_error(const std::vector<StepError>& steps) {
+    ModelMatrixError chain;
+    for (const StepError& step : steps) {
+        chain.bound = product_bound(step.exact, step.bound, chain.exact, chain.bound);
+        chain.exact = step.exact * chain.exact;
+    }
+    return chain;
+}
 
 InverseInputError<glm::dmat3> inverse_input_error(const glm::dmat3& exact, const glm::dmat3& bound) {
     return inverse_input_error_of(exact, bound);

@@ -3,6 +3,8 @@
 // constant. The vertex (precision.h section 2), world-position and normal bounds (shading_precision.h) add it.
 #pragma once
 
+#include <vector>
+
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -52,6 +54,19 @@ struct ModelMatrixError {
     glm::dmat4 exact{1.0};
     glm::dmat4 bound{0.0};
 };
+
+// One step of a chain: its exact matrix and the entrywise bound on raster's float one.
+struct StepError {
+    glm::dmat4 exact{1.0};
+    glm::dmat4 bound{0.0};
+};
+
+// A step of the scene as raster holds it (a file's floats): the oracle's matrix of it and raster's error.
+StepError raster_step_error(const TransformStep& step);
+
+// The chain S_n ... S_1 of steps whose float matrices are off by their bounds, and raster's float product's bound
+// (RASTER'S PRODUCT above).
+ModelMatrixError raster_chain_error(const std::vector<StepError>& steps);
 
 // The oracle's model matrix of `transform` and how far raster's can be from it.
 ModelMatrixError raster_model_error(const ModelTransform& transform);

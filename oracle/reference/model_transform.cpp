@@ -11,9 +11,7 @@
 #include "oracle/reference/camera.h"
 
 namespace raster::oracle {
-namespace {
 
-// The rotation of unit quaternion (w, x, y, z): v -> q v q*, written out (glm: m[column][row]).
 glm::dmat4 unit_quaternion_matrix(double w, double x, double y, double z) {
     glm::dmat4 m(1.0);
     m[0][0] = w * w + x * x - y * y - z * z;
@@ -27,8 +25,6 @@ glm::dmat4 unit_quaternion_matrix(double w, double x, double y, double z) {
     m[1][2] = 2.0 * (y * z + w * x);
     return m;
 }
-
-}  // namespace
 
 glm::dmat4 oracle_step_matrix(const TransformStep& step) {
     return std::visit(

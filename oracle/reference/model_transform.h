@@ -15,6 +15,9 @@ namespace raster::oracle {
 // (camera.h) placed at its eye.
 glm::dmat4 oracle_step_matrix(const TransformStep& step);
 
+// The rotation of unit quaternion (w, x, y, z): v -> q v q*, written out.
+glm::dmat4 unit_quaternion_matrix(double w, double x, double y, double z);
+
 // S_n ... S_1.
 glm::dmat4 oracle_compose(const std::vector<TransformStep>& steps);
 

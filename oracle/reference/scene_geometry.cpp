@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "oracle/reference/animation_pose.h"
 #include "oracle/reference/shading_precision.h"
 
 namespace raster::oracle {
@@ -65,6 +66,15 @@ const Material& triangle_material(const Scene& scene, const OracleTriangle& tria
 
 namespace {
 
+// A mesh an animated node carries is posed by the oracle at the scene's instant (animation_pose.h), whatever steps
+// raster's posing wrote; any other mesh's transform is the file's.
+ModelMatrixError model_error_of(const Scene& scene, uint32_t mesh) {
+    const SceneAnimation* animation = scene.animation.get();
+    if (animation && mesh < animation->meshes.size() && animation->meshes[mesh].node >= 0)
+        return posed_model_error(*animation, mesh, scene.posed_at);
+    return raster_model_error(scene.meshes[mesh].transform);
+}
+
 // Camera, triangles, world and view positions (and world errors when `world_errors`).
 OracleScene view_of_scene(const Scene& scene, const Camera& camera, int width, int height, bool world_errors) {
     OracleScene out;
@@ -74,7 +84,7 @@ OracleScene view_of_scene(const Scene& scene, const Camera& camera, int width, i
         const SceneMesh& mesh = scene.meshes[m];
         const uint32_t first = static_cast<uint32_t>(out.world.size());
         out.mesh_first_vertex.push_back(first);
-        const ModelMatrixError& model = out.models.emplace_back(raster_model_error(mesh.transform));
+        const ModelMatrixError& model = out.models.emplace_back(model_error_of(scene, m));
         for (const glm::vec3& p : mesh.data->positions) {
             const glm::dvec3 world(model.exact * glm::dvec4(glm::dvec3(p), 1.0));
             out.world.push_back(world);

@@ -182,6 +182,7 @@ struct Scene {
     std::vector<SceneMesh> meshes;
     // What moves over time, for an animated scene (raster/transform/scene_pose.h poses it); null for a static one.
     std::shared_ptr<const SceneAnimation> animation;
+    float posed_at = 0.0f;  // the instant, in seconds, the animation was last posed at (the oracle poses it too)
 };
 
 // Whether any mesh has a textured material: the only scenes that read texture coordinates.

@@ -20,6 +20,7 @@ void camera_from_pose(const glm::mat4& pose, Camera& camera) {
 void pose_scene(Scene& scene, float time) {
     if (!scene.animation) return;
     const SceneAnimation& animation = *scene.animation;
+    scene.posed_at = time;
     for (size_t m = 0; m < scene.meshes.size() && m < animation.meshes.size(); ++m) {
         const SceneAnimation::Placement& placement = animation.meshes[m];
         if (placement.node < 0) continue;
