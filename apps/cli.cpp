@@ -8,6 +8,7 @@
 
 #include "apps/command.h"
 #include "raster/core/errors.h"
+#include "raster/simd/simd_targets.h"
 
 namespace raster::cli {
 namespace {
@@ -17,6 +18,16 @@ constexpr const char* kDescription =
     "Exit codes: 0 success, 1 a check failed (view: the port could not be bound), 2 bad usage or input (nothing\n"
     "written), 3 an output could not be written.";
 
+// `raster --version`: the version, and the SIMD target the kernels dispatch to on this CPU (the best of those this
+// build compiles that the CPU runs; only a test pins another, through force_simd_target).
+std::string version_text() {
+    const std::vector<int64_t> targets = simd_targets();
+    std::string text = std::string("raster ") + RASTER_VERSION + "\nSIMD target: " + simd_target_name(targets.front()) +
+                       " (this CPU runs:";
+    for (const int64_t target : targets) text += " " + simd_target_name(target);
+    return text + ")";
+}
+
 }  // namespace
 
 struct CommandLine::Parser {
@@ -25,6 +36,8 @@ struct CommandLine::Parser {
 
     explicit Parser(const std::vector<CommandRegistrar>& extra_commands) {
         app.require_subcommand(1);
+        app.set_version_flag("--version", version_text,
+                             "Print raster's version and the SIMD target its kernels run on here, and exit");
         commands = {
             add_render_command(app),
             add_animate_command(app),
@@ -67,6 +80,9 @@ int CommandLine::run_once(const std::vector<std::string>& args, std::ostream& ou
     } catch (const CLI::CallForHelp&) {
         // `raster render --help` prints the subcommand's help; `raster --help` lists every subcommand's flags too.
         out << app.help("", app.get_subcommands().empty() ? CLI::AppFormatMode::All : CLI::AppFormatMode::Normal);
+        return kExitOk;
+    } catch (const CLI::CallForVersion& version) {
+        out << version.what() << "\n";
         return kExitOk;
     } catch (const CLI::CallForAllHelp&) {
         out << app.help("", CLI::AppFormatMode::All);

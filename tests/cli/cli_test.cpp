@@ -192,6 +192,39 @@ TEST(Cli, repeatedFramesOfAShadowedTransparentSceneAreASingleFramesBytes) {
     EXPECT_EQ(read_bytes(ws.out() / "repeated.png"), read_bytes(ws.out() / "once.png"));
 }
 
+// The CPU's feature flags as the kernel reports them (/proc/cpuinfo's first "flags" line).
+std::string cpu_flags() {
+    std::ifstream cpuinfo("/proc/cpuinfo");
+    for (std::string line; std::getline(cpuinfo, line);)
+        if (line.rfind("flags", 0) == 0) return line + " ";
+    return "";
+}
+
+TEST(Cli, versionNamesTheReleaseAndTheSimdTargetThisCpuGets) {
+    Workspace ws;
+    const Result version = run_raster(ws, {"--version"});
+    ASSERT_EQ(version.status, 0) << version.err;
+    std::istringstream lines(version.out);
+    std::string first, second;
+    std::getline(lines, first);
+    std::getline(lines, second);
+    EXPECT_EQ(first, std::string("raster ") + RASTER_PROJECT_VERSION);
+    ASSERT_EQ(second.rfind("SIMD target: ", 0), 0u) << second;
+    const std::string chosen = second.substr(13, second.find(' ', 13) - 13);
+    // The best x86 target the kernel says this CPU has (Highway's AVX3 is AVX-512 F, VL, DQ and BW; its AVX2 also
+    // needs FMA, BMI2 and F16C), and the list ends with the portable fallback.
+    const std::string flags = cpu_flags();
+    auto has = [&](const char* flag) { return flags.find(std::string(" ") + flag + " ") != std::string::npos; };
+    if (has("avx512f") && has("avx512vl") && has("avx512dq") && has("avx512bw"))
+        EXPECT_EQ(chosen, "AVX3") << second;
+    else if (has("avx2") && has("fma") && has("bmi2") && has("f16c"))
+        EXPECT_EQ(chosen, "AVX2") << second;
+    EXPECT_NE(second.find("SCALAR)"), std::string::npos) << second;
+    // It is the program's flag, not a subcommand's: `render --version` is a usage error.
+    const Result late = run_raster(ws, {"render", "--version"});
+    EXPECT_NE(late.status, 0);
+}
+
 TEST(Cli, missingSubcommandIsUsageError) {
     Workspace ws;
     const Result none = run_raster(ws, {});
