@@ -9,6 +9,7 @@
 #include "apps/render_outputs.h"
 #include "apps/settings_flags.h"
 #include "harness/comparison/comparison_output.h"
+#include "harness/comparison/junit_report.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "raster/core/errors.h"
@@ -24,6 +25,7 @@ struct CompareFlags {
     SettingsFlags settings;
     std::string json_out;
     std::string diff_out;
+    std::string junit_out;
     bool fast_oracle = false;
 };
 
@@ -47,6 +49,9 @@ void register_compare_flags(CLI::App& app, CompareFlags& flags) {
     compare->add_option("scene", flags.scene, "Scene file")->required();
     register_settings_flags(*compare, flags.settings);
     compare->add_option("--json", flags.json_out, "Write the counts and timings as JSON to this file");
+    compare->add_option("--junit", flags.junit_out,
+                        "Write the verdict as JUnit XML to this file (one test case, failed when genuine_total > 0), "
+                        "for CI systems");
     compare->add_option("--diff", flags.diff_out,
                         "Write a disagreement map: genuine samples red, genuine colour magenta, ambiguous yellow, "
                         "agreeing dimmed grey");
@@ -96,6 +101,10 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
         if (!flags.json_out.empty())
             write_file_atomically(flags.json_out, harness::comparison_json(*comparison).dump(2) + "\n");
         if (!flags.diff_out.empty()) write_image(flags.diff_out, harness::diff_map(*comparison), options.threads);
+        if (!flags.junit_out.empty())
+            write_file_atomically(flags.junit_out,
+                                  harness::junit_xml("raster compare", {harness::junit_case(*comparison, flags.scene)},
+                                                     harness::junit_timestamp_now(), harness::junit_hostname()));
     } catch (const std::exception& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;

@@ -12,6 +12,7 @@
 #include "apps/progress_bar.h"
 #include "apps/render_outputs.h"
 #include "harness/comparison/comparison_output.h"
+#include "harness/comparison/junit_report.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "oracle/report/report.h"
@@ -35,6 +36,7 @@ struct ReportFlags {
     bool fast_oracle = false;
     int threads = 0;
     std::string tradeoff_dir;
+    std::string junit_out;
 };
 
 void register_report_flags(CLI::App& app, ReportFlags& flags) {
@@ -51,6 +53,9 @@ void register_report_flags(CLI::App& app, ReportFlags& flags) {
     report->add_flag("--fast-oracle", flags.fast_oracle, "Embree without RTC_SCENE_FLAG_ROBUST (faster, less careful)");
     report->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (results are the same for any count)")
         ->check(CLI::Range(0, 256));
+    report->add_option("--junit", flags.junit_out,
+                       "Also write the verdicts as JUnit XML to this file: a test case per scene, failed when it has "
+                       "genuine disagreements, for CI systems");
     report->add_option("--tradeoff", flags.tradeoff_dir,
                        "Link the results of `raster tradeoff -o DIR` (copied into OUTPUT/tradeoff/); without it, "
                        "OUTPUT/tradeoff/tradeoff.json is linked when it exists");
@@ -167,6 +172,8 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     options.mode = flags.fast_oracle ? oracle::OracleMode::fast : oracle::OracleMode::robust;
     options.threads = flags.threads;
     std::vector<oracle::ReportRow> rows;
+    std::vector<harness::JunitCase> junit_cases;
+    const std::string started = harness::junit_timestamp_now();
     std::set<std::string> taken;
     ProgressBar progress(err, scenes.size());
     try {
@@ -186,6 +193,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
             write_image(dir / row.oracle_image, comparison->oracle_image, flags.threads);
             write_image(dir / row.diff_image, harness::diff_map(*comparison), flags.threads);
             row.comparison = harness::comparison_json(*comparison);
+            junit_cases.push_back(harness::junit_case(*comparison, scene.path));
             char line[256];
             std::snprintf(line, sizeof line,
                           "%s: genuine %llu, ambiguous %llu, colour genuine %llu, raster %.0f ms, oracle %.0f ms\n",
@@ -208,6 +216,9 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
         }
         write_file_atomically(dir / "summary.json", summary.dump(2) + "\n");
         write_file_atomically(dir / "index.html", oracle::report_html(rows, link));
+        if (!flags.junit_out.empty())
+            write_file_atomically(flags.junit_out, harness::junit_xml("raster report", junit_cases, started,
+                                                                      harness::junit_hostname()));
     } catch (const std::exception& error) {
         progress.finish();
         err << "raster report: error: " << error.what() << "\n";

@@ -1,4 +1,5 @@
 // `raster compare`: the summary, the JSON fields, the diff map, and the exit codes 0, 1, 2 and 3.
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -44,6 +45,29 @@ TEST(CompareCli, writesTheJsonAndTheDiffMapAndExitsZeroWithoutGenuineDisagreemen
     EXPECT_EQ(json["genuine_total"], 0);
     EXPECT_EQ(json["agree"].get<uint64_t>() + json["ambiguous_total"].get<uint64_t>(), 320u * 240u * 4u);
     EXPECT_GT(fs::file_size(dir / "diff.png"), 100u);
+    fs::remove_all(dir);
+}
+
+// `--junit` on both commands: a file the common JUnit schema accepts (tests/support/junit.xsd), one case per scene.
+TEST(CompareCli, compareAndReportWriteJunitXmlWithACasePerScene) {
+    const fs::path dir = fresh_dir("junit");
+    const CliRun compare = run_raster({"compare", kCorpus + "single_triangle.yaml", "--junit", (dir / "compare.xml").string()});
+    ASSERT_EQ(compare.code, 0) << compare.err;
+    const CliRun report = run_raster({"report", kCorpus + "single_triangle.yaml", kCorpus + "flat_cube.yaml", "-o",
+                                      (dir / "report").string(), "--junit", (dir / "report.xml").string()});
+    ASSERT_EQ(report.code, 0) << report.err;
+    const std::string schema = std::string(RASTER_SOURCE_DIR) + "/tests/support/junit.xsd";
+    for (const char* name : {"compare.xml", "report.xml"}) {
+        const std::string command =
+            "xmllint --noout --schema '" + schema + "' '" + (dir / name).string() + "' > /dev/null 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0) << name;
+    }
+    std::stringstream compare_xml, report_xml;
+    compare_xml << std::ifstream(dir / "compare.xml").rdbuf();
+    report_xml << std::ifstream(dir / "report.xml").rdbuf();
+    EXPECT_NE(compare_xml.str().find("tests=\"1\" failures=\"0\""), std::string::npos) << compare_xml.str();
+    EXPECT_NE(report_xml.str().find("tests=\"2\" failures=\"0\""), std::string::npos) << report_xml.str();
+    EXPECT_NE(report_xml.str().find("name=\"flat_cube.yaml, "), std::string::npos) << report_xml.str();
     fs::remove_all(dir);
 }
 
