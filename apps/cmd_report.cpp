@@ -1,4 +1,5 @@
-// `raster report`: compares many scenes with the oracle and writes index.html, summary.json and the images.
+// `raster report`: compares many scenes with the oracle and writes index.html, a page per scene, summary.json and the
+// images.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "oracle/report/report.h"
+#include "oracle/report/scene_page.h"
 #include "raster/core/errors.h"
 #include "raster/core/file_io.h"
 #include "raster/image/image.h"
@@ -41,7 +43,8 @@ struct ReportFlags {
 
 void register_report_flags(CLI::App& app, ReportFlags& flags) {
     CLI::App* report = app.add_subcommand(
-        "report", "Compare scenes with the Embree oracle and write an HTML report (index.html, summary.json, images).");
+        "report", "Compare scenes with the Embree oracle and write an HTML report (index.html, a page per scene, summary.json, "
+                  "images).");
     report->footer(
         "Inputs are scene files, mesh files (.obj, .ply, framed by a default camera and light) or directories (every\n"
         ".yaml, .yml and .json file in them, sorted: the meshes beside a scene are not scenes); the default is\n"
@@ -174,7 +177,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     std::vector<oracle::ReportRow> rows;
     std::vector<harness::JunitCase> junit_cases;
     const std::string started = harness::junit_timestamp_now();
-    std::set<std::string> taken;
+    std::set<std::string> taken = {"index"};  // a scene named index gets index-2.html, not the index's name
     ProgressBar progress(err, scenes.size());
     try {
         for (size_t i = 0; i < scenes.size(); ++i) {
@@ -189,10 +192,12 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
             row.raster_image = stem + ".raster.png";
             row.oracle_image = stem + ".oracle.png";
             row.diff_image = stem + ".diff.png";
+            row.page = stem + ".html";
             write_image(dir / row.raster_image, comparison->raster.image, flags.threads);
             write_image(dir / row.oracle_image, comparison->oracle_image, flags.threads);
             write_image(dir / row.diff_image, harness::diff_map(*comparison), flags.threads);
             row.comparison = harness::comparison_json(*comparison);
+            write_file_atomically(dir / row.page, oracle::scene_page_html(row));
             junit_cases.push_back(harness::junit_case(*comparison, scene.path));
             char line[256];
             std::snprintf(line, sizeof line,

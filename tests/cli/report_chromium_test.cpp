@@ -1,10 +1,11 @@
 // `raster report` end to end: the report is written, and headless Chromium (Debian `chromium`, installed by
-// .ci/install) opens it, loads every row's images, and the page's script marks the rows and answers the pointer over
-// a diff map, as the DOM Chromium dumps once the page is idle shows. Without Chromium the test fails: it does not
-// skip.
+// .ci/install) opens the index and a scene page, with a script that plays a person's clicks, wheel and drags, as the
+// DOM Chromium dumps once the page is idle shows: the index sorts, the scene page zooms, pans, swipes and reads the
+// pixel clicked. Without Chromium the test fails: it does not skip.
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -40,45 +41,88 @@ size_t occurrences(const std::string& text, const std::string& needle) {
     return n;
 }
 
-// A person's use of the page, played by a script the test adds to a copy of it, after the page's own: once the
-// page has loaded, the pointer moves to CSS pixel (6, 4) of the first diff map, where the test has put one colour
-// disagreement, and to (75, 150) of the second, where there is none. The page's script writes what it shows for
-// each into the row's .hover box.
-constexpr const char* kPointerScript = R"(<script>
+// A person's use of the index, played by a script the test adds to a copy of it after the page's own: once the page
+// has loaded, a click on the "scene" header, then another. The order of the rows after each is kept on <body>.
+constexpr const char* kIndexScript = R"(<script>
 window.addEventListener('load', () => {
-  const maps = document.querySelectorAll('img.diff');
-  maps[0].dataset.disagreements = JSON.stringify([{x: 8, y: 5, file: 'first.png', raster: [250, 10, 10],
-                                                   allowed: [[0, 5], [0, 6], [1, 7]], oracle: [2, 3, 4]}]);
-  const pointAt = (image, x, y) => {
-    const box = image.getBoundingClientRect();
-    image.dispatchEvent(new MouseEvent('mousemove', {clientX: box.left + x, clientY: box.top + y}));
-  };
-  pointAt(maps[0], 6, 4);
-  pointAt(maps[1], 75, 150);
+  const order = () => Array.from(document.querySelectorAll('tr.scene')).map(row => row.dataset.scene).join(' ');
+  const header = document.querySelector('th[data-column="scene"]');
+  header.click();
+  document.body.dataset.firstOrder = order() + ' / ' + document.body.dataset.sorted;
+  header.click();
+  document.body.dataset.secondOrder = order() + ' / ' + document.body.dataset.sorted;
 });
 </script>
 )";
 
-// `page` with kPointerScript added at the end of its body, written beside it (so its images resolve the same).
-fs::path with_pointer_script(const fs::path& page) {
+// A person's use of a scene page: a colour disagreement put at pixel (8, 5) of the diff map and a click there; the
+// wheel turned once (zoom in) over raster's pane at (100, 50); a drag on the oracle's pane from (200, 100) to
+// (150, 80); a click on the diff map at (300, 200); the swipe shown and its slider set to 30; then "1:1". What the
+// page shows after each step is kept on <body>, with the frame's width (the fit's scale follows from it).
+constexpr const char* kScenePageScript = R"(<script>
+window.addEventListener('load', () => {
+  const body = document.body;
+  const frame = layer => document.querySelector('.pane[data-layer="' + layer + '"] .frame');
+  const at = (element, type, x, y, extra) => {
+    const box = element.getBoundingClientRect();
+    const init = Object.assign({clientX: box.left + x, clientY: box.top + y, bubbles: true}, extra || {});
+    const event = type === 'wheel' ? new WheelEvent(type, init) : new PointerEvent(type, init);
+    element.dispatchEvent(event);
+    return (event.clientX - box.left) + ',' + (event.clientY - box.top);  // where it landed: whole CSS pixels
+  };
+  const click = (element, x, y) => { at(element, 'pointerdown', x, y); at(element, 'pointerup', x, y); };
+  const readout = () => document.querySelector('.readout').textContent;
+  body.dataset.frameWidth = String(frame('diff').clientWidth);
+  body.dataset.fitZoom = body.dataset.zoom;
+  document.querySelector('img.diff').dataset.disagreements = JSON.stringify([{x: 8, y: 5, file: 'first.png',
+      raster: [250, 10, 10], allowed: [[0, 5], [0, 6], [1, 7]], oracle: [2, 3, 4]}]);
+  const scale = Number(body.dataset.zoom);
+  click(frame('diff'), 8.5 * scale, 5.5 * scale);
+  body.dataset.firstReadout = readout();
+  body.dataset.wheelAt = at(frame('raster'), 'wheel', 100, 50, {deltaY: -100});
+  body.dataset.wheelZoom = body.dataset.zoom;
+  body.dataset.dragFrom = at(frame('oracle'), 'pointerdown', 200, 100);
+  body.dataset.dragTo = at(frame('oracle'), 'pointermove', 150, 80);
+  at(frame('oracle'), 'pointerup', 150, 80);
+  body.dataset.dragPan = body.dataset.pan;
+  const transforms = new Set(Array.from(document.querySelectorAll('img.view')).map(image => image.style.transform));
+  body.dataset.transforms = String(transforms.size);
+  body.dataset.clickAt = at(frame('diff'), 'pointerdown', 300, 200);
+  at(frame('diff'), 'pointerup', 300, 200);
+  body.dataset.secondPixel = body.dataset.pixel;
+  const toggle = document.querySelector('.swipe-toggle');
+  toggle.checked = true;
+  toggle.dispatchEvent(new Event('change'));
+  const slider = document.querySelector('.swipe-slider');
+  slider.value = '30';
+  slider.dispatchEvent(new Event('input'));
+  body.dataset.swipeShown = String(!document.querySelector('.pane.swipe').hidden);
+  body.dataset.clip = document.querySelector('.pane.swipe img.over').style.clipPath;
+  document.querySelector('button[data-zoom="1"]').click();
+  body.dataset.actualZoom = body.dataset.zoom;
+});
+</script>
+)";
+
+// `page` with `script` added at the end of its body, written beside it (so its images resolve the same).
+fs::path with_script(const fs::path& page, const char* script) {
     std::string html = read_text(page);
     const size_t end = html.rfind("</body>");
     EXPECT_NE(end, std::string::npos);
-    html.insert(end == std::string::npos ? html.size() : end, kPointerScript);
-    const fs::path driven = page.parent_path() / "pointed.html";
+    html.insert(end == std::string::npos ? html.size() : end, script);
+    const fs::path driven = page.parent_path() / ("driven-" + page.filename().string());
     std::ofstream(driven, std::ios::binary) << html;
     return driven;
 }
 
-// The text of the .hover box of the row of scene `name` in a dumped DOM ("" when the row is not found).
-std::string hover_text(const std::string& dom, const std::string& name) {
-    const size_t row = dom.find("data-scene=\"" + name + "\"");
-    if (row == std::string::npos) return "";
-    const std::string open = "<div class=\"hover\">";
-    const size_t start = dom.find(open, row);
-    if (start == std::string::npos) return "";
-    const size_t end = dom.find("</div>", start);
-    return dom.substr(start + open.size(), end - start - open.size());
+// The value of <body>'s attribute `name` in a dumped DOM ("" when it is missing).
+std::string body_data(const std::string& dom, const std::string& name) {
+    const size_t body = dom.find("<body");
+    const std::string key = " " + name + "=\"";
+    const size_t start = dom.find(key, body);
+    if (body == std::string::npos || start == std::string::npos || start > dom.find('>', body)) return "";
+    const size_t end = dom.find('"', start + key.size());
+    return dom.substr(start + key.size(), end - start - key.size());
 }
 
 class ReportInChromium : public ::testing::Test {
@@ -92,7 +136,7 @@ protected:
     fs::path work;
 };
 
-TEST_F(ReportInChromium, everyRowRendersWithAllItsImages) {
+TEST_F(ReportInChromium, theIndexSortsAndEachScenePageZoomsPansSwipesAndReadsPixels) {
     const std::string chromium = find_chromium();
     ASSERT_FALSE(chromium.empty()) << "chromium is not installed (bash .ci/install installs it)";
 
@@ -106,29 +150,62 @@ TEST_F(ReportInChromium, everyRowRendersWithAllItsImages) {
     const nlohmann::json summary = nlohmann::json::parse(read_text(dir / "summary.json"));
     ASSERT_EQ(summary["scene_count"], 3);
     EXPECT_EQ(summary["scenes"][0]["name"], "single_triangle");
-    for (const auto& scene : summary["scenes"])
+    EXPECT_EQ(summary["scenes"][0]["page"], "single_triangle.html");
+    for (const auto& scene : summary["scenes"]) {
         for (const char* image : {"raster", "oracle", "diff"})
             EXPECT_TRUE(fs::exists(dir / scene["images"][image].get<std::string>())) << scene["name"] << " " << image;
+        EXPECT_TRUE(fs::exists(dir / scene["page"].get<std::string>())) << scene["name"];
+    }
 
-    const fs::path page = with_pointer_script(dir / "index.html");
-    const std::string dom = report_dom(chromium, work, page);
-    // The page's script ran on load: every row's three images decoded, so every row is marked rendered.
-    EXPECT_NE(dom.find("data-rows-rendered=\"3\""), std::string::npos) << dom.substr(0, 2000);
-    EXPECT_EQ(occurrences(dom, "data-rendered=\"yes\""), 3u);
-    EXPECT_EQ(occurrences(dom, "data-rendered=\"no\""), 0u);
-    // Over a diff map the pointer's CSS pixel maps to an image pixel by the map's scale: single_triangle is 320 x 240
-    // shown 240 px wide (the stylesheet's width), so (6, 4) is pixel (8, 5); interpenetrating is 320 x 320, so
-    // (75, 150) is (100, 200). At the one disagreement the page lists it, channel by channel; elsewhere the pixel.
-    EXPECT_EQ(hover_text(dom, "single_triangle"),
-              "(8, 5) first.png: raster 250 10 10, allowed 0-5 0-6 1-7, oracle 2 3 4");
-    EXPECT_EQ(hover_text(dom, "interpenetrating"), "(100, 200)");
-    EXPECT_EQ(hover_text(dom, "perspective_quad"), "");  // never pointed at
+    // The index: every row's thumbnail decoded, and a click on a header sorts by it, a second click reverses.
+    const std::string index = report_dom(chromium, work, with_script(dir / "index.html", kIndexScript));
+    EXPECT_EQ(body_data(index, "data-rows-rendered"), "3") << index.substr(0, 2000);
+    EXPECT_EQ(occurrences(index, "data-rendered=\"yes\""), 3u);
+    EXPECT_EQ(body_data(index, "data-first-order"),
+              "interpenetrating perspective_quad single_triangle / scene ascending");
+    EXPECT_EQ(body_data(index, "data-second-order"),
+              "single_triangle perspective_quad interpenetrating / scene descending");
 
-    // The check can fail: with one image gone, its row is no longer marked rendered.
-    fs::remove(dir / summary["scenes"][1]["images"]["oracle"].get<std::string>());
-    const std::string broken = report_dom(chromium, work, page);
-    EXPECT_NE(broken.find("data-rows-rendered=\"2\""), std::string::npos);
-    EXPECT_EQ(occurrences(broken, "data-rendered=\"no\""), 1u);
+    // A scene page (single_triangle, 320 x 240): fitted to its frame on load, a click reads the pixel under it, the
+    // wheel zooms by 5/4 about the pointer, a drag pans, and every pane moves as one.
+    const std::string page = report_dom(chromium, work, with_script(dir / "single_triangle.html", kScenePageScript));
+    EXPECT_EQ(body_data(page, "data-rendered"), "yes") << page.substr(0, 2000);
+    const double frame_width = std::stod(body_data(page, "data-frame-width"));
+    const double fit = frame_width / 320.0;
+    EXPECT_NEAR(std::stod(body_data(page, "data-fit-zoom")), fit, 1e-9);
+    EXPECT_EQ(body_data(page, "data-first-readout"), "(8, 5) first.png: raster 250 10 10, allowed 0-5 0-6 1-7, oracle 2 3 4");
+    // Events land on whole CSS pixels of the page: each step's point is where its event landed in its frame.
+    const auto point = [&](const std::string& name) {
+        const std::string text = body_data(page, name);
+        const size_t comma = text.find(',');
+        EXPECT_NE(comma, std::string::npos) << name << ": " << text;
+        return comma == std::string::npos ? std::pair{0.0, 0.0}
+                                          : std::pair{std::stod(text.substr(0, comma)), std::stod(text.substr(comma + 1))};
+    };
+    const double zoomed = fit * 1.25;
+    EXPECT_NEAR(std::stod(body_data(page, "data-wheel-zoom")), zoomed, 1e-9);
+    // The image point under the wheel stays there: the pan moves by that point times (1 - 5/4); the drag adds its move.
+    const auto [wheel_x, wheel_y] = point("data-wheel-at");
+    const auto [from_x, from_y] = point("data-drag-from");
+    const auto [to_x, to_y] = point("data-drag-to");
+    const double pan_x = -0.25 * wheel_x + (to_x - from_x), pan_y = -0.25 * wheel_y + (to_y - from_y);
+    const auto [dragged_x, dragged_y] = point("data-drag-pan");
+    EXPECT_NEAR(dragged_x, pan_x, 1e-9);
+    EXPECT_NEAR(dragged_y, pan_y, 1e-9);
+    EXPECT_EQ(body_data(page, "data-transforms"), "1") << "every pane shares one zoom and pan";
+    const auto [click_x, click_y] = point("data-click-at");
+    const int x = static_cast<int>(std::floor((click_x - pan_x) / zoomed)), y = static_cast<int>(std::floor((click_y - pan_y) / zoomed));
+    EXPECT_EQ(body_data(page, "data-second-pixel"), std::to_string(x) + "," + std::to_string(y));
+    EXPECT_EQ(body_data(page, "data-swipe-shown"), "true");
+    EXPECT_EQ(body_data(page, "data-swipe"), "30");
+    EXPECT_EQ(body_data(page, "data-clip"), "inset(0px 0px 0px 30%)");
+    EXPECT_EQ(body_data(page, "data-actual-zoom"), "1");
+
+    // The check can fail: with one image gone, the page is no longer marked rendered, nor its index row.
+    fs::remove(dir / "single_triangle.oracle.png");
+    EXPECT_EQ(body_data(report_dom(chromium, work, dir / "single_triangle.html"), "data-rendered"), "no");
+    fs::remove(dir / "interpenetrating.diff.png");
+    EXPECT_EQ(body_data(report_dom(chromium, work, dir / "index.html"), "data-rows-rendered"), "2");
 }
 
 TEST_F(ReportInChromium, badInputExitsTwoBeforeWritingAnything) {

@@ -1,7 +1,14 @@
-// The report's page and summary: one row per scene, escaped names, unique image names, no network references.
+// The report's pages and summary: the index's row per scene, failing first, linking to the scene's page; the scene
+// page's three images, its legend in the diff map's own colours; escaped names, unique file names, nothing from the
+// network.
 #include "oracle/report/report.h"
 
+#include <cstdio>
+
 #include <gtest/gtest.h>
+
+#include "oracle/compare/diff_map.h"
+#include "oracle/report/scene_page.h"
 
 namespace raster::oracle {
 namespace {
@@ -23,22 +30,49 @@ TEST(ReportPage, fileStemsArePlainAndUnique) {
     EXPECT_EQ(unique_file_stem("", taken), "scene");
 }
 
-TEST(ReportPage, oneEscapedRowPerSceneWithItsImagesAndCounts) {
-    const std::vector<ReportRow> rows = {{"cube<1>", counts(0), "c.raster.png", "c.oracle.png", "c.diff.png"},
-                                         {"teapot", counts(7), "t.raster.png", "t.oracle.png", "t.diff.png"}};
+size_t count_of(const std::string& text, const std::string& part) {
+    size_t n = 0;
+    for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+    return n;
+}
+
+TEST(ReportPage, theIndexHasAnEscapedRowPerSceneFailingFirstEachLinkingToItsPage) {
+    const std::vector<ReportRow> rows = {{"cube<1>", counts(0), "c.raster.png", "c.oracle.png", "c.diff.png", "c.html"},
+                                         {"teapot", counts(7), "t.raster.png", "t.oracle.png", "t.diff.png", "t.html"}};
     const std::string html = report_html(rows);
-    size_t count = 0;
-    for (size_t at = html.find("<tr class=\"scene"); at != std::string::npos; at = html.find("<tr class=\"scene", at + 1))
-        ++count;
-    EXPECT_EQ(count, 2u);
+    EXPECT_EQ(count_of(html, "<tr class=\"scene"), 2u);
     EXPECT_NE(html.find("cube&lt;1&gt;"), std::string::npos);
     EXPECT_EQ(html.find("cube<1>"), std::string::npos);
-    for (const char* image : {"c.raster.png", "c.oracle.png", "c.diff.png", "t.diff.png"})
-        EXPECT_NE(html.find(std::string("src=\"") + image + "\""), std::string::npos) << image;
+    // The failing scene comes first although it was given second, with its reasons.
+    EXPECT_LT(html.find("data-scene=\"teapot\""), html.find("data-scene=\"cube&lt;1&gt;\""));
+    EXPECT_NE(html.find("<tr class=\"scene fail\" data-scene=\"teapot\""), std::string::npos);
+    EXPECT_NE(html.find("data-value=\"visibility 7\">visibility 7</td>"), std::string::npos) << html;
+    for (const char* link : {"href=\"c.html\"", "href=\"t.html\"", "src=\"c.diff.png\"", "src=\"t.diff.png\""})
+        EXPECT_EQ(count_of(html, link), std::string(link).find("html") != std::string::npos ? 2u : 1u) << link;
     EXPECT_NE(html.find("2 scenes, 1 with genuine disagreements"), std::string::npos);
-    EXPECT_NE(html.find("scene genuine"), std::string::npos);  // the failing row is marked
     EXPECT_EQ(html.find("http:"), std::string::npos);  // self-contained: nothing from the network
     EXPECT_EQ(html.find("https:"), std::string::npos);
+}
+
+TEST(ReportPage, aScenePageShowsItsThreeImagesTheVerdictAndALegendInTheMapsOwnColours) {
+    nlohmann::json c = counts(7);
+    c["color_disagreements"] = nlohmann::json::array({{{"x", 1}, {"y", 2}, {"file", "a\"b.png"}}});
+    const std::string html = scene_page_html({"teapot", c, "t.raster.png", "t.oracle.png", "t.diff.png", "t.html"});
+    EXPECT_NE(html.find("FAIL: 7 genuine (visibility 7)"), std::string::npos);
+    EXPECT_EQ(count_of(html, "src=\"t.raster.png\""), 2u);  // its pane and the swipe's
+    EXPECT_EQ(count_of(html, "src=\"t.oracle.png\""), 2u);
+    EXPECT_EQ(count_of(html, "src=\"t.diff.png\""), 1u);
+    EXPECT_NE(html.find("width=\"8\" height=\"6\""), std::string::npos);
+    EXPECT_NE(html.find("href=\"index.html\""), std::string::npos);
+    EXPECT_NE(html.find("a\\&quot;b.png"), std::string::npos) << "the disagreements' JSON, escaped";
+    // Every colour the map paints is named in the legend.
+    for (const uint8_t* colour : {kGenuineColor, kColourDisagreementColor, kAmbiguousColor, kShadowDisagreementColor,
+                                  kShadowOpenColor}) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "#%02x%02x%02x", colour[0], colour[1], colour[2]);
+        EXPECT_NE(html.find(std::string("data-colour=\"") + hex + "\""), std::string::npos) << hex;
+    }
+    EXPECT_EQ(html.find("http:"), std::string::npos);
 }
 
 TEST(ReportPage, theSummaryAddsUpTheScenes) {
