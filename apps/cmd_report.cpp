@@ -14,6 +14,7 @@
 #include "apps/render_outputs.h"
 #include "harness/comparison/comparison_output.h"
 #include "harness/comparison/junit_report.h"
+#include "harness/comparison/pixel_evidence.h"
 #include "oracle/compare/diff_map.h"
 #include "oracle/reference/embree_device.h"
 #include "oracle/report/report.h"
@@ -193,10 +194,13 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
             row.oracle_image = stem + ".oracle.png";
             row.diff_image = stem + ".diff.png";
             row.page = stem + ".html";
+            row.evidence = stem + ".evidence.js";
             write_image(dir / row.raster_image, comparison->raster.image, flags.threads);
             write_image(dir / row.oracle_image, comparison->oracle_image, flags.threads);
             write_image(dir / row.diff_image, harness::diff_map(*comparison), flags.threads);
             row.comparison = harness::comparison_json(*comparison);
+            write_file_atomically(dir / row.evidence,
+                                  "window.rasterEvidence = " + harness::pixel_evidence(*comparison).dump() + ";\n");
             write_file_atomically(dir / row.page, oracle::scene_page_html(row));
             junit_cases.push_back(harness::junit_case(*comparison, scene.path));
             char line[256];

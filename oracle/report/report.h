@@ -19,7 +19,8 @@ struct ReportRow {
     std::string name;           // the scene file's stem
     nlohmann::json comparison;  // comparison_json of the scene
     std::string raster_image, oracle_image, diff_image;
-    std::string page;  // the scene's own page (scene_page.h)
+    std::string page;      // the scene's own page (scene_page.h)
+    std::string evidence;  // the script beside it that holds its pixels' evidence for the inspector; "" for none
 };
 
 // A file-name stem for a row's images: `name` with every character outside [A-Za-z0-9._-] replaced by '_', with

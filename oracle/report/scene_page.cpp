@@ -149,8 +149,12 @@ std::string scene_page_html(const ReportRow& row) {
                  "<input type=\"range\" class=\"swipe-slider\" min=\"0\" max=\"100\" value=\"50\" "
                  "aria-label=\"swipe between raster and the oracle\">");
     html += "</div>\n";
+    html += "<div class=\"inspector\"><h2>Pixel inspector</h2><p class=\"inspector-status\">Click a pixel of any "
+            "image: each of its samples' class, and what raster and the oracle each saw there.</p>"
+            "<table class=\"samples\"></table></div>\n";
     html += legend();
     html += counts_table(c);
+    if (!row.evidence.empty()) html += "<script src=\"" + escape_html(row.evidence) + "\"></script>\n";
     html += "<script>" + std::string(scene_page_script()) + "</script>\n</body>\n</html>\n";
     return html;
 }

@@ -22,6 +22,11 @@ body { font-family: sans-serif; margin: 1.5em; background: #fafafa; color: #222;
 .swipe-slider { width: min(30vw, 560px); display: block; }
 .legend span.swatch { display: inline-block; width: 0.9em; height: 0.9em; vertical-align: middle; margin: 0 0.3em 0 0.8em; }
 table.counts { border-collapse: collapse; margin-top: 1em; }
+.inspector h2 { font-size: 1.1em; margin: 1em 0 0.3em; }
+table.samples { border-collapse: collapse; font-family: monospace; font-size: 0.9em; }
+table.samples th, table.samples td { padding: 0.15em 0.7em; border-bottom: 1px solid #ddd; text-align: left; }
+table.samples tr.genuine td.class { color: #c00; font-weight: bold; }
+table.samples tr.ambiguous td.class { color: #9a7b00; }
 table.counts td { padding: 0.15em 0.8em 0.15em 0; vertical-align: top; }
 )";
 }
@@ -65,6 +70,40 @@ function disagreementsAt(x, y) {
     d.file + ': raster ' + d.raster.join(' ') + ', allowed ' + d.allowed.map(r => r[0] + '-' + r[1]).join(' ') +
     ', oracle ' + d.oracle.join(' ')).join('; ');
 }
+// The inspector: the evidence the report wrote beside the page (window.rasterEvidence) for pixel (x, y), a row per
+// sample. A pixel it does not list has every sample agreeing.
+const genuineClasses = ['visibility', 'barycentrics', 'depth'];
+function showEvidence(x, y) {
+  const status = document.querySelector('.inspector-status'), table = document.querySelector('table.samples');
+  table.textContent = '';
+  const evidence = window.rasterEvidence;
+  if (!evidence) { status.textContent = 'No evidence file beside this page.'; return; }
+  const samples = (evidence.pixels || {})[x + ',' + y];
+  if (!samples) {
+    status.textContent = 'Pixel (' + x + ', ' + y + '): every one of its ' + evidence.samples +
+      ' samples agrees with the oracle' + (evidence.unlisted > 0 ? ' (or is past the ' + evidence.listed +
+      ' pixels listed; ' + evidence.unlisted + ' more were left out)' : '') + '.';
+    return;
+  }
+  status.textContent = 'Pixel (' + x + ', ' + y + '): ' + samples.length + ' samples.';
+  const head = table.insertRow();
+  for (const title of ['sample', 'class', 'raster triangle', 'raster barycentrics', 'raster depth',
+                       'oracle triangle', 'oracle barycentrics', 'oracle depth']) {
+    const th = document.createElement('th');
+    th.textContent = title;
+    head.appendChild(th);
+  }
+  samples.forEach((s, k) => {
+    const row = table.insertRow();
+    row.className = genuineClasses.includes(s[0]) ? 'genuine' : s[0] === 'agree' ? 'agree' : 'ambiguous';
+    const cells = [k, s[0], s[1] < 0 ? 'none' : s[1], s[2].join(' '), s[3], s[4] < 0 ? 'none' : s[4], s[5].join(' '), s[6]];
+    cells.forEach((value, i) => {
+      const td = row.insertCell();
+      td.textContent = String(value);
+      if (i === 1) td.className = 'class';
+    });
+  });
+}
 function readPixel(px, py) {
   const x = Math.floor((px - state.x) / state.scale), y = Math.floor((py - state.y) / state.scale);
   const inside = x >= 0 && y >= 0 && x < width && y < height;
@@ -72,6 +111,7 @@ function readPixel(px, py) {
   const found = inside ? disagreementsAt(x, y) : '';
   document.querySelector('.readout').textContent =
     inside ? '(' + x + ', ' + y + ')' + (found ? ' ' + found : ': no colour disagreement') : 'outside the image';
+  if (inside) showEvidence(x, y);
 }
 for (const frame of document.querySelectorAll('.frame')) {
   frame.style.aspectRatio = width + ' / ' + height;

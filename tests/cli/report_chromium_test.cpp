@@ -208,6 +208,57 @@ TEST_F(ReportInChromium, theIndexSortsAndEachScenePageZoomsPansSwipesAndReadsPix
     EXPECT_EQ(body_data(report_dom(chromium, work, dir / "index.html"), "data-rows-rendered"), "2");
 }
 
+// The inspector: the test reads the evidence file the report wrote beside the teapot's page, picks its first pixel,
+// and a script clicks that pixel's centre on the diff map; the inspector's table must show a row per sample with
+// the classes and triangles the file gives. A pixel the file does not list shows as every sample agreeing.
+TEST_F(ReportInChromium, theInspectorShowsEachSampleOfTheClickedPixel) {
+    const std::string chromium = find_chromium();
+    ASSERT_FALSE(chromium.empty()) << "chromium is not installed (bash .ci/install installs it)";
+    const fs::path dir = work / "report";
+    std::ostringstream out, err;
+    ASSERT_EQ(run({"raster", "report", kCorpus + "teapot.yaml", "--samples", "4", "-o", dir.string()}, out, err), 0)
+        << err.str();
+    const std::string script = read_text(dir / "teapot.evidence.js");
+    const std::string prefix = "window.rasterEvidence = ";
+    ASSERT_EQ(script.rfind(prefix, 0), 0u);
+    const nlohmann::json evidence = nlohmann::json::parse(script.substr(prefix.size(), script.rfind(';') - prefix.size()));
+    ASSERT_EQ(evidence["samples"], 4);
+    ASSERT_FALSE(evidence["pixels"].empty()) << "the teapot at 4 samples has edge-band samples";
+    const std::string key = evidence["pixels"].begin().key();
+    const nlohmann::json& samples = evidence["pixels"][key];
+    const std::string x = key.substr(0, key.find(',')), y = key.substr(key.find(',') + 1);
+    // At the fit's scale a pixel is under one CSS pixel, and events land on whole CSS pixels: the script first
+    // zooms about the pixel (ten turns of the wheel, 9.3 times), then clicks its centre where the page now draws it.
+    const std::string click =
+        "<script>\nwindow.addEventListener('load', () => {\n"
+        "  const body = document.body, frame = document.querySelector('.pane[data-layer=\"diff\"] .frame');\n"
+        "  const box = frame.getBoundingClientRect();\n"
+        "  const centre = (px, py) => { const [panX, panY] = body.dataset.pan.split(',').map(Number), z = Number(body.dataset.zoom);\n"
+        "    return {clientX: box.left + panX + px * z, clientY: box.top + panY + py * z, bubbles: true}; };\n"
+        "  for (let turn = 0; turn < 10; ++turn)\n"
+        "    frame.dispatchEvent(new WheelEvent('wheel', Object.assign(centre(" + x + " + 0.5, " + y + " + 0.5), {deltaY: -1})));\n"
+        "  for (const type of ['pointerdown', 'pointerup']) frame.dispatchEvent(new PointerEvent(type, centre(" + x +
+        " + 0.5, " + y + " + 0.5)));\n"
+        "  const rows = Array.from(document.querySelectorAll('table.samples tr')).slice(1);\n"
+        "  body.dataset.inspected = body.dataset.pixel + ': ' + rows.map(row => row.cells[1].textContent + ' ' +\n"
+        "    row.cells[2].textContent + ' ' + row.cells[5].textContent).join('; ');\n"
+        "  document.querySelector('button[data-zoom=\"fit\"]').click();\n"
+        "  for (const type of ['pointerdown', 'pointerup']) frame.dispatchEvent(new PointerEvent(type, centre(0.5, 0.5)));\n"
+        "  body.dataset.cornerStatus = document.querySelector('.inspector-status').textContent;\n"
+        "});\n</script>\n";
+    const std::string dom = report_dom(chromium, work, with_script(dir / "teapot.html", click.c_str()));
+    std::string want = key + ": ";
+    for (size_t k = 0; k < samples.size(); ++k) {
+        const auto triangle = [](const nlohmann::json& t) { return t.get<int64_t>() < 0 ? std::string("none") : t.dump(); };
+        want += (k ? "; " : "") + samples[k][0].get<std::string>() + " " + triangle(samples[k][1]) + " " +
+                triangle(samples[k][4]);
+    }
+    EXPECT_EQ(body_data(dom, "data-inspected"), want) << dom.substr(0, 3000);
+    // The corner pixel (0, 0) is background on both sides: not listed, every sample agreeing.
+    EXPECT_EQ(evidence["pixels"].count("0,0"), 0u);
+    EXPECT_EQ(body_data(dom, "data-corner-status"), "Pixel (0, 0): every one of its 4 samples agrees with the oracle.");
+}
+
 TEST_F(ReportInChromium, badInputExitsTwoBeforeWritingAnything) {
     std::ostringstream out, err;
     const fs::path dir = work / "report";
