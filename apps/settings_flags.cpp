@@ -102,8 +102,7 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     if (flags.depth_format) parse_depth_format(*flags.depth_format, settings.modes.depth);
     if (flags.clipping) parse_clipping(*flags.clipping, settings.modes.clipping);
     if (flags.hierarchical_z) settings.modes.hierarchical_z = *flags.hierarchical_z == "on";
-    if (flags.shadows)  // a directional light has no position to centre a cube shadow map on
-        for (Light& light : scene.lights) light.shadows = light.type != LightType::directional;
+    if (flags.shadows) set_shadow_casting(scene, true);
     if (flags.shadow_resolution) settings.shadows.resolution = *flags.shadow_resolution;
     if (flags.shadow_bias) settings.shadows.bias = *flags.shadow_bias;
     if (flags.shadow_slope_bias) settings.shadows.slope_bias = *flags.shadow_slope_bias;

@@ -40,6 +40,8 @@ constexpr const char* kPage = R"PAGE(<!doctype html>
     <fieldset><legend>Anti-aliasing</legend>
       <label><input type="checkbox" id="msaa"> MSAA: shade once per pixel per triangle</label></fieldset>
     <fieldset id="filter"><legend>Texture filter</legend><div class="note" id="filter-note"></div></fieldset>
+    <fieldset id="shadows"><legend>Shadows</legend><div class="note" id="shadows-note"></div></fieldset>
+    <fieldset id="transparency"><legend>Transparency</legend><div class="note" id="transparency-note"></div></fieldset>
     <fieldset id="animation" hidden><legend>Animation</legend>
       <button type="button" id="play" aria-pressed="false">play</button>
       <input type="range" id="time" min="0" max="1" step="0.01" aria-label="time">
@@ -59,6 +61,9 @@ constexpr const char* kPage = R"PAGE(<!doctype html>
 const SHADINGS = ['flat', 'gouraud', 'phong', 'blinn-phong', 'cel', 'gooch', 'unlit'];
 const SAMPLES = [1, 4, 16];
 const FILTERS = ['nearest', 'bilinear', 'trilinear', 'anisotropic'];
+const SHADOWS = ['on', 'off'];  // every point and spot light casts shadows, or none does
+const TRANSPARENCIES = ['sorted', 'weighted', 'opaque'];  // blended surfaces' mode, or every material opaque
+const HEARTBEAT_MS = 3000;  // how often the page checks that the server is still there
 const DEGREES_PER_PIXEL = 0.4;  // of drag
 const MIN_PLAY_STEP = 1 / 30;  // seconds: a played frame's least step, and the least wall time between two
 const ZOOM_PER_100_WHEEL = 1.1;  // distance factor per 100 units of wheel delta
@@ -66,14 +71,15 @@ const selftest = new URLSearchParams(location.search).get('selftest') === '1';
 const $ = (id) => document.getElementById(id);
 const image = $('frame');
 
-// What the next frame asks for; filter null keeps the scene's own.
+// What the next frame asks for; filter, shadows and transparency null keep the scene's own.
 // time null: the scene as loaded (a static scene, or an animated one not yet played or scrubbed).
 // camera null: the one the scene was loaded with.
 const view = {shading: 'blinn-phong', samples: 1, msaa: false, filter: null, yaw: 0, pitch: 0, distance: 1, time: null,
-              camera: null};
+              camera: null, shadows: null, transparency: null};
 // From GET /state: the elevation limit, the scene eye's own elevation, the distance range, the scene's filter.
 const scene = {elevationLimit: 89, elevation: 0, distance: [0.05, 20], filter: 'none', textured: false, animation: null,
-               cameras: [], loadedCamera: 0};
+               cameras: [], loadedCamera: 0, shadows: false, canCastShadows: false, transparency: 'sorted',
+               blended: false};
 // Playing: the wall clock when the last frame was asked for, so the next advances by the time that passed.
 let playing = false, playedAt = 0;
 const frames = [];  // every frame shown: {params, index, ms, hash (self-test only)}
@@ -86,6 +92,15 @@ const clampPitch = (pitch) => clamp(pitch, Math.max(-180, -scene.elevationLimit 
 
 function showStatus(text) { $('status').textContent = text; }
 
+// The server stopped answering (raster view ended, or the connection broke): say so, and stop playing. The
+// heartbeat clears the message when it answers again.
+function serverGone(error) {
+  document.body.dataset.server = 'gone';
+  showStatus(`The server is gone: raster view has stopped, or the connection to it was lost (${error}). ` +
+             'Start it again (raster view SCENE) and reload this page.');
+  if (playing) setPlaying(false);
+}
+
 // GET /render's parameters for the current view (docs/viewer.md).
 function renderParams() {
   const params = {shading: view.shading, samples: String(view.samples), msaa: view.msaa ? '1' : '0',
@@ -93,6 +108,8 @@ function renderParams() {
   if (view.filter) params.filter = view.filter;
   if (view.time !== null) params.time = view.time.toFixed(3);
   if (view.camera !== null) params.camera = String(view.camera);
+  if (view.shadows !== null) params.shadows = view.shadows;
+  if (view.transparency !== null) params.transparency = view.transparency;
   return params;
 }
 
@@ -144,7 +161,9 @@ async function renderLoop() {
       $('frame-info').textContent = `(server render; frame ${frame.index}, PNG encoding ${encodeMs} ms)`;
       showStatus('');
     } catch (error) {
-      showStatus(`the frame could not be fetched: ${error}`);
+      // fetch rejects with a TypeError when no server answers; anything else is this frame's own failure.
+      if (error instanceof TypeError) serverGone(error);
+      else showStatus(`the frame could not be shown: ${error}`);
       if (playing) setPlaying(false);
     }
   }
@@ -200,6 +219,8 @@ function showControls() {
   markPressed('shading', SHADINGS, view.shading);
   markPressed('samples', SAMPLES, view.samples);
   markPressed('filter', FILTERS, view.filter || scene.filter);
+  markPressed('shadows', SHADOWS, view.shadows || (scene.shadows ? 'on' : 'off'));
+  markPressed('transparency', TRANSPARENCIES, view.transparency || scene.transparency);
   $('msaa').checked = view.msaa;
   scene.cameras.forEach((name, i) => $(`camera-pick-${i}`).setAttribute(
     'aria-pressed', String(i === (view.camera === null ? scene.loadedCamera : view.camera))));
@@ -230,6 +251,8 @@ function buildControls() {
   addButtons('shading', SHADINGS, (shading) => { view.shading = shading; });
   addButtons('samples', SAMPLES, (samples) => { view.samples = samples; });
   addButtons('filter', FILTERS, (filter) => { view.filter = filter; });
+  addButtons('shadows', SHADOWS, (shadows) => { view.shadows = shadows; });
+  addButtons('transparency', TRANSPARENCIES, (transparency) => { view.transparency = transparency; });
   $('msaa').addEventListener('change', (event) => {
     view.msaa = event.target.checked;
     requestFrame();
@@ -288,16 +311,38 @@ async function start() {
     Object.assign(scene, {elevationLimit: state.limits.elevation_degrees, elevation: state.camera.elevation_degrees,
                           distance: state.limits.distance, filter: state.scene_settings.filter,
                           textured: state.textured, animation: state.animation,
-                          cameras: state.cameras.names, loadedCamera: state.cameras.loaded});
+                          cameras: state.cameras.names, loadedCamera: state.cameras.loaded,
+                          shadows: state.scene_settings.shadows, canCastShadows: state.scene_settings.can_cast_shadows,
+                          transparency: state.scene_settings.transparency, blended: state.scene_settings.blended});
     $('scene').textContent = `${state.scene} (${state.width} x ${state.height})`;
   } catch (error) {
-    showStatus(`the viewer's state could not be read: ${error}`);
+    serverGone(error);
     document.body.dataset.selftest = 'fail';
     return;
   }
+  document.body.dataset.server = 'up';
+  setInterval(async () => {
+    try {
+      await fetch('/state', {cache: 'no-store'});
+      if (document.body.dataset.server === 'gone') {
+        document.body.dataset.server = 'up';
+        showStatus('');
+      }
+    } catch (error) {
+      serverGone(error);
+    }
+  }, HEARTBEAT_MS);
   if (!scene.textured) {
     for (const filter of FILTERS) $(`filter-${filter}`).disabled = true;
     $('filter-note').textContent = 'The scene has no textures: no filter changes it.';
+  }
+  if (!scene.canCastShadows) {
+    for (const value of SHADOWS) $(`shadows-${value}`).disabled = true;
+    $('shadows-note').textContent = 'The scene has no point or spot light: nothing casts shadows.';
+  }
+  if (!scene.blended) {
+    for (const value of TRANSPARENCIES) $(`transparency-${value}`).disabled = true;
+    $('transparency-note').textContent = 'No material of the scene is transparent.';
   }
   if (scene.cameras.length < 2) scene.cameras = [];  // one camera: nothing to pick
   scene.cameras.forEach((name, i) => {

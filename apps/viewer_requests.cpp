@@ -107,6 +107,22 @@ const std::map<std::string, ParameterParser>& parameter_parsers() {
              request.camera = *camera;
              return "";
          }},
+        {"shadows",
+         [](const std::string& value, ViewRequest& request) -> std::string {
+             if (value != "on" && value != "off") return "shadows must be on or off, got " + quoted(value);
+             request.shadows = value == "on";
+             return "";
+         }},
+        {"transparency",
+         [](const std::string& value, ViewRequest& request) -> std::string {
+             for (const TransparencyChoice choice :
+                  {TransparencyChoice::sorted, TransparencyChoice::weighted, TransparencyChoice::opaque})
+                 if (value == to_string(choice)) {
+                     request.transparency = choice;
+                     return "";
+                 }
+             return "transparency must be sorted, weighted or opaque, got " + quoted(value);
+         }},
         {"time",
          [](const std::string& value, ViewRequest& request) {
              double time = 0.0;
@@ -125,6 +141,10 @@ std::string known_parameter_names() {
 }
 
 }  // namespace
+
+const char* to_string(TransparencyChoice choice) {
+    return choice == TransparencyChoice::sorted ? "sorted" : choice == TransparencyChoice::weighted ? "weighted" : "opaque";
+}
 
 ParsedViewRequest parse_view_request(const QueryParameters& parameters) {
     ParsedViewRequest parsed;

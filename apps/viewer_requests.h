@@ -19,6 +19,10 @@ inline constexpr int kMaxViewSamples = 16;  // the pattern decides which counts 
 inline constexpr double kMaxViewTime = 1e6;  // seconds, either side of 0
 inline constexpr int kMaxViewCamera = 1 << 16;
 
+// The viewer's transparency switch: a compositing mode for blended surfaces, or every material drawn opaque.
+enum class TransparencyChoice { sorted, weighted, opaque };
+const char* to_string(TransparencyChoice choice);
+
 // One frame as a request asks for it. Every field left out keeps the scene's own value (its camera: yaw 0,
 // pitch 0, distance 1), so a request alone decides its frame, whatever came before it.
 struct ViewRequest {
@@ -31,6 +35,8 @@ struct ViewRequest {
     double distance = 1.0;
     std::optional<double> time;  // an animated scene posed at this instant, in seconds; none: as it was loaded
     std::optional<int> camera;   // a glTF file's camera to draw from (SceneLoadOptions::camera); none: the loaded one
+    std::optional<bool> shadows;  // every point and spot light casts shadows, or none does; none: the scene's own
+    std::optional<TransparencyChoice> transparency;  // none: the scene's own mode
 };
 
 // A request, or what is wrong with it (one line, plain text, naming the parameter and quoting what was sent).
@@ -44,8 +50,8 @@ using QueryParameters = std::multimap<std::string, std::string>;
 
 // Parses GET /render's parameters: shading (unlit, flat, gouraud, phong, blinn-phong, cel, gooch), samples
 // (integer, 1..16), msaa (0 or 1), filter (nearest, bilinear, trilinear, anisotropic), yaw and pitch (finite
-// degrees, |yaw| <= 360, |pitch| <= 180), distance (finite, 0.05..20), time (finite seconds, |time| <= 1e6) and
-// camera (integer, 0..65536).
+// degrees, |yaw| <= 360, |pitch| <= 180), distance (finite, 0.05..20), time (finite seconds, |time| <= 1e6),
+// camera (integer, 0..65536), shadows (on, off) and transparency (sorted, weighted, opaque).
 // Refuses unknown or repeated names.
 ParsedViewRequest parse_view_request(const QueryParameters& parameters);
 

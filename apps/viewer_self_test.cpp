@@ -1,4 +1,5 @@
-// The viewer page's self-test script: clicks, drags, the wheel, the time slider, play and a camera pick, checked.
+// The viewer page's self-test script: clicks, drags, the wheel, the time slider, play, a camera pick and the shadow
+// and transparency switches, checked.
 #include "apps/viewer_self_test.h"
 
 namespace raster::cli {
@@ -69,6 +70,22 @@ async function runSelfTest() {
     const zoomed = await step('wheel', () => image.dispatchEvent(new WheelEvent('wheel', {
       bubbles: true, cancelable: true, deltaY: 300, ...centre})));
     if (scene.animation) await animationSelfTest(report, step, zoomed);
+    // Transparency first: a transparent surface casts no shadow, so with everything opaque the shadow switch shows.
+    if (scene.blended) {
+      const before = frames[frames.length - 1];
+      const opaque = await step('transparency opaque', () => $('transparency-opaque').dispatchEvent(
+        new MouseEvent('click', {bubbles: true, cancelable: true, view: window})));
+      report.checks = {...report.checks, opaque_asked_for: opaque.params.transparency === 'opaque',
+                       opaque_changed_the_image: opaque.hash !== before.hash};
+    }
+    if (scene.canCastShadows) {
+      const other = scene.shadows ? 'off' : 'on';
+      const before = frames[frames.length - 1];
+      const switched = await step('shadows ' + other, () => $(`shadows-${other}`).dispatchEvent(
+        new MouseEvent('click', {bubbles: true, cancelable: true, view: window})));
+      report.checks = {...report.checks, shadows_asked_for: switched.params.shadows === other,
+                       shadows_changed_the_image: switched.hash !== before.hash};
+    }
     if (scene.cameras.length > 1) {
       const other = scene.loadedCamera === 0 ? 1 : 0;
       const before = frames[frames.length - 1];

@@ -57,6 +57,8 @@ nlohmann::json to_json(const ViewerFrameRecord& record) {
             {"distance", record.distance},
             {"time", record.time ? nlohmann::json(*record.time) : nlohmann::json(nullptr)},
             {"camera", record.camera},
+            {"shadows", record.shadows},
+            {"transparency", record.transparency},
             {"eye", to_json(record.eye)},
             {"frame_ms", record.frame_ms},
             {"encode_ms", record.encode_ms},
@@ -112,6 +114,11 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     if (request.samples) settings.samples = *request.samples;
     if (request.msaa) settings.msaa = *request.msaa;
     if (request.camera) use_camera(*request.camera, frame);
+    if (request.shadows) set_shadow_casting(frame, *request.shadows);
+    if (request.transparency == TransparencyChoice::opaque) draw_every_material_opaque(frame);
+    else if (request.transparency)
+        settings.transparency.mode =
+            *request.transparency == TransparencyChoice::sorted ? TransparencyMode::sorted : TransparencyMode::weighted;
     if (request.time) {
         if (!frame.animation) throw ViewRequestError("time: the scene has no animation to pose");
         pose_scene(frame, static_cast<float>(*request.time));  // the camera too, where the animation carries it
@@ -137,6 +144,8 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     record.distance = request.distance;
     record.time = request.time;
     record.camera = request.camera.value_or(cameras_.loaded);
+    record.shadows = has_shadows(frame);
+    record.transparency = request.transparency == TransparencyChoice::opaque ? "opaque" : to_string(settings.transparency.mode);
     record.eye = frame.camera.eye;
     record.frame_ms = buffers_.stats.ms_total;
     record.png_bytes = result.png.size();
@@ -161,7 +170,11 @@ nlohmann::json ViewerSession::state() const {
               {"samples", scene_.settings.samples},
               {"pattern", to_string(scene_.settings.pattern)},
               {"msaa", scene_.settings.msaa},
-              {"filter", scene_filter_name(scene_)}}},
+              {"filter", scene_filter_name(scene_)},
+              {"shadows", has_shadows(scene_)},
+              {"can_cast_shadows", can_cast_shadows(scene_)},
+              {"transparency", to_string(scene_.settings.transparency.mode)},
+              {"blended", has_transparency(scene_)}}},
             {"camera",
              {{"eye", to_json(camera.eye)},
               {"target", to_json(camera.target)},

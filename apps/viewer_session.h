@@ -32,6 +32,8 @@ struct ViewerFrameRecord {
     double yaw_degrees = 0, pitch_degrees = 0, distance = 1;
     std::optional<double> time;  // the instant posed, when the request asked for one
     int camera = 0;              // the file's camera drawn from
+    bool shadows = false;        // whether some light cast shadows in the frame
+    std::string transparency;    // sorted or weighted (the mode), or opaque
     glm::vec3 eye{0.0f};  // the orbited camera's
     double frame_ms = 0;   // render() alone (RenderStats::ms_total): the X-Frame-Ms header
     double encode_ms = 0;  // the PNG encoding after it

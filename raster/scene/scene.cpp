@@ -100,6 +100,23 @@ bool has_transparency(const Scene& scene) {
     return any_material(scene, [](const Material& material) { return is_blended(material); });
 }
 
+void set_shadow_casting(Scene& scene, bool on) {
+    for (Light& light : scene.lights) light.shadows = on && light.type != LightType::directional;
+}
+
+bool can_cast_shadows(const Scene& scene) {
+    return std::any_of(scene.lights.begin(), scene.lights.end(),
+                       [](const Light& light) { return light.type != LightType::directional; });
+}
+
+void draw_every_material_opaque(Scene& scene) {
+    for (SceneMesh& mesh : scene.meshes)
+        for_each_material(mesh, [](Material& material) {
+            material.opacity = 1.0f;
+            if (material.texture) material.texture->reads_alpha = false;
+        });
+}
+
 const char* to_string(TransparencyMode mode) { return mode == TransparencyMode::sorted ? "sorted" : "weighted"; }
 
 bool parse_transparency_mode(const std::string& name, TransparencyMode& out) {

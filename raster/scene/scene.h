@@ -195,6 +195,14 @@ bool has_shadows(const Scene& scene);
 // a transparency pass.
 bool has_transparency(const Scene& scene);
 
+// Every point and spot light casts shadows (`on`) or none does; a directional light never does (it has no position
+// to centre a cube shadow map on). What --shadows and the viewer's switch do.
+void set_shadow_casting(Scene& scene, bool on);
+// Whether some light could cast shadows: a point or spot light.
+bool can_cast_shadows(const Scene& scene);
+// Every material drawn opaque: its opacity 1 and its texture's alpha not read (the viewer's "opaque" switch).
+void draw_every_material_opaque(Scene& scene);
+
 const char* to_string(TransparencyMode mode);
 bool parse_transparency_mode(const std::string& name, TransparencyMode& out);
 

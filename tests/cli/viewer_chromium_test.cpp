@@ -10,6 +10,8 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -131,9 +133,14 @@ TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSe
     });
     ASSERT_NE(zoomed, nullptr) << "no frame after the drag is farther away";
     EXPECT_NE((*zoomed)["png_fnv1a64"], (*dragged)["png_fnv1a64"]);
+    // The teapot's lights cast no shadows until the switch turns them on: then every frame has them, another image.
+    EXPECT_EQ(first["shadows"], false);
+    const nlohmann::json* shadowed = find_frame(frames, (*zoomed)["index"], [](const nlohmann::json& f) { return f["shadows"] == true; });
+    ASSERT_NE(shadowed, nullptr) << "no frame after the wheel has shadows";
+    EXPECT_NE((*shadowed)["png_fnv1a64"], frames[(*shadowed)["index"].get<size_t>() - 1]["png_fnv1a64"]);
 
     // The page showed those frames: the hash it took of the bytes it drew is the logged hash of the same frame.
-    ASSERT_EQ(report["steps"].size(), 4u);
+    ASSERT_EQ(report["steps"].size(), 5u);  // initial, flat, drag, wheel, shadows on
     for (const nlohmann::json& step : report["steps"]) {
         const nlohmann::json& shown = step["frame"];
         const size_t index = shown["index"];
@@ -173,7 +180,10 @@ TEST(ViewerInChromium, theTimeSliderPlayAndTheCameraButtonsAskForTheirFramesAndG
     EXPECT_NE((*scrubbed)["png_fnv1a64"], frames[(*scrubbed)["index"].get<size_t>() - 1]["png_fnv1a64"]);
     // Playing asked for a new instant each frame (later, or wrapped past the last key to the first), another image.
     std::vector<const nlohmann::json*> played;
-    for (size_t i = (*scrubbed)["index"].get<size_t>() + 1; i < frames.size() && frames[i]["camera"] == 0; ++i)
+    for (size_t i = (*scrubbed)["index"].get<size_t>() + 1;
+         i < frames.size() && frames[i]["camera"] == 0 && frames[i]["shadows"] == (*scrubbed)["shadows"] &&
+         frames[i]["transparency"] == (*scrubbed)["transparency"];
+         ++i)
         played.push_back(&frames[i]);
     ASSERT_GE(played.size(), 3u);
     for (size_t i = 1; i < played.size(); ++i) {
@@ -195,8 +205,37 @@ TEST(ViewerInChromium, theTimeSliderPlayAndTheCameraButtonsAskForTheirFramesAndG
     EXPECT_EQ(frames[0]["camera"], 0);
     EXPECT_NE((*side)["png_fnv1a64"], frames[(*side)["index"].get<size_t>() - 1]["png_fnv1a64"]);
     EXPECT_NE((*side)["eye"], frames[0]["eye"]);
+    // The shadow switch (the leaf's light is a point light) and the transparency switch: each a frame of its own
+    // kind, another image than the frame before it.
+    const nlohmann::json* shadowed = find_frame(frames, 0, [](const nlohmann::json& f) { return f["shadows"] == true; });
+    ASSERT_NE(shadowed, nullptr) << "no frame had shadows";
+    EXPECT_NE((*shadowed)["png_fnv1a64"], frames[(*shadowed)["index"].get<size_t>() - 1]["png_fnv1a64"]);
+    EXPECT_EQ(frames[0]["transparency"], "sorted");
+    const nlohmann::json* opaque =
+        find_frame(frames, 0, [](const nlohmann::json& f) { return f["transparency"] == "opaque"; });
+    ASSERT_NE(opaque, nullptr) << "no frame was drawn opaque";
+    EXPECT_NE((*opaque)["png_fnv1a64"], frames[(*opaque)["index"].get<size_t>() - 1]["png_fnv1a64"]);
     EXPECT_EQ(run.report["pass"], true);
     EXPECT_EQ(run.viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << run.viewer.log();
+}
+
+// The page says so when its server is gone: the page as the viewer served it, opened after the viewer stopped (from
+// a file, where no request can reach a server), shows the message and marks <body data-server="gone">.
+TEST(ViewerInChromium, thePageSaysWhenTheServerIsGone) {
+    const std::string chromium = find_chromium();
+    if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (bash .ci/install installs it)";
+    TempDir dir;
+    RunningViewer viewer = start_viewer(kTeapot, dir / "viewer.err");
+    ASSERT_GT(viewer.port, 0) << viewer.first_line << "\n" << viewer.log();
+    const httplib::Result page = viewer.client().Get("/");
+    ASSERT_TRUE(page);
+    EXPECT_EQ(viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << viewer.log();
+    const fs::path copy = dir / "viewer.html";
+    std::ofstream(copy, std::ios::binary) << page->body;
+    const std::string dom = self_test_dom(chromium, dir.path(), "file://" + copy.string());
+    EXPECT_NE(dom.find("data-server=\"gone\""), std::string::npos) << dom.substr(0, 3000);
+    EXPECT_NE(element_text(dom, "<p id=\"status\"").find("The server is gone: raster view has stopped"),
+              std::string::npos) << dom.substr(0, 3000);
 }
 
 }  // namespace

@@ -53,8 +53,21 @@ TEST(ViewerRequests, unknownNamesAndValuesAreRefusedByName) {
               "filter must be nearest, bilinear, trilinear or anisotropic, got 'cubic'");
     EXPECT_EQ(error_of({{"msaa", "true"}}), "msaa must be 0 or 1, got 'true'");
     EXPECT_EQ(error_of({{"zoom", "2"}}),
-              "unknown parameter 'zoom' (known: camera, distance, filter, msaa, pitch, samples, shading, time, yaw)");
+              "unknown parameter 'zoom' (known: camera, distance, filter, msaa, pitch, samples, shading, shadows, time, "
+              "transparency, yaw)");
     EXPECT_EQ(error_of({{"yaw", "1"}, {"yaw", "2"}}), "parameter 'yaw' is given more than once");
+}
+
+TEST(ViewerRequests, theShadowAndTransparencySwitchesTakeTheirWordsOnly) {
+    EXPECT_EQ(parse_view_request({{"shadows", "on"}}).request.shadows, true);
+    EXPECT_EQ(parse_view_request({{"shadows", "off"}}).request.shadows, false);
+    EXPECT_FALSE(parse_view_request({}).request.shadows);
+    EXPECT_EQ(error_of({{"shadows", "1"}}), "shadows must be on or off, got '1'");
+    EXPECT_EQ(parse_view_request({{"transparency", "sorted"}}).request.transparency, TransparencyChoice::sorted);
+    EXPECT_EQ(parse_view_request({{"transparency", "weighted"}}).request.transparency, TransparencyChoice::weighted);
+    EXPECT_EQ(parse_view_request({{"transparency", "opaque"}}).request.transparency, TransparencyChoice::opaque);
+    EXPECT_FALSE(parse_view_request({}).request.transparency);
+    EXPECT_EQ(error_of({{"transparency", "off"}}), "transparency must be sorted, weighted or opaque, got 'off'");
 }
 
 TEST(ViewerRequests, samplesOutsideOneToSixteenOrNotWholeAreRefused) {
