@@ -103,6 +103,7 @@ nlohmann::json comparison_json(const Comparison& c) {
               {"transparency", c.transparency.genuine_pixels},
               {"depth_image", c.depth.genuine_pixels}}},
             {"genuine_total", c.genuine_total()},
+            {"genuine_reasons", genuine_reasons(c)},
             {"unjudged", c.judged.unjudged},
             {"shadows",
              {{"edge", c.shadows.edge_pixels},

@@ -13,7 +13,7 @@ namespace raster::harness {
 
 // {scene, renderer, width, height, samples, oracle_mode, agree, ambiguous: {edge_band, depth_tie, clip_boundary,
 //  facing}, ambiguous_total, ambiguous_fraction: {...}, genuine: {visibility, barycentrics, depth, color, shadow,
-//  transparency, depth_image}, genuine_total, shadows: {edge, depth, inconsistent} (pixels, with lights that cast
+//  transparency, depth_image}, genuine_total, genuine_reasons (genuine_reasons below), shadows: {edge, depth, inconsistent} (pixels, with lights that cast
 //  shadows), transparency: {edge, depth, order}, pixels: {judged, ambiguous, color_png, color_ppm, depth_png,
 //  depth_ppm}, outputs: {color, depth} (whether each was written and judged), max_color_error, max_depth_error,
 //  color_disagreements: [...], depth_disagreements: [...], raster_ms, write_ms, oracle_ms, compare_ms}

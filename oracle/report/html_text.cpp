@@ -62,17 +62,4 @@ std::vector<nlohmann::json> objects(const nlohmann::json& object, const char* ke
     return out;
 }
 
-std::string genuine_reasons_text(const nlohmann::json& comparison) {
-    const nlohmann::json genuine = field(comparison, "genuine");
-    std::string out;
-    for (const auto& [key, label] : {std::pair{"visibility", "visibility"}, {"barycentrics", "barycentrics"},
-                                     {"depth", "depth"}, {"color", "colour"}, {"shadow", "shadow"},
-                                     {"transparency", "transparency"}, {"depth_image", "depth image"}}) {
-        const nlohmann::json count = field(genuine, key);
-        if (count.is_number() && count.get<double>() > 0)
-            out += (out.empty() ? "" : ", ") + std::string(label) + " " + number(count);
-    }
-    return out;
-}
-
 }  // namespace raster::oracle

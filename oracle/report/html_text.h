@@ -30,7 +30,4 @@ std::string text(const nlohmann::json& object, const char* key);
 // The elements of object[key] that are objects (none when it is missing or not an array).
 std::vector<nlohmann::json> objects(const nlohmann::json& object, const char* key);
 
-// The genuine counts by reason from a comparison's JSON, "visibility 12, colour 3", or "" when there are none.
-std::string genuine_reasons_text(const nlohmann::json& comparison);
-
 }  // namespace raster::oracle

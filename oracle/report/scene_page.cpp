@@ -123,7 +123,7 @@ std::string scene_page_html(const ReportRow& row) {
                        scene_page_style() + "</style>\n</head>\n<body data-rendered=\"no\" data-pixel=\"\">\n";
     html += "<p><a class=\"back\" href=\"index.html\">&larr; all scenes</a></p>\n<h1>" + escape_html(row.name) + "</h1>\n";
     html += std::string("<p class=\"verdict ") + (genuine ? "fail\">FAIL: " + number(c["genuine_total"]) +
-                                                            " genuine (" + escape_html(genuine_reasons_text(c)) + ")"
+                                                            " genuine (" + escape_html(text(c, "genuine_reasons")) + ")"
                                                       : "pass\">PASS: no genuine disagreement") + "</p>\n";
     html += "<p>" + number(c["width"]) + " &times; " + number(c["height"]) + ", " + number(c["samples"]) +
             (c.value("samples", 0) == 1 ? " sample" : " samples") + " per pixel, " + escape_html(text(c, "renderer")) + " against the oracle (" +

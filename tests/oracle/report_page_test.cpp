@@ -17,6 +17,7 @@ nlohmann::json counts(uint64_t genuine) {
     return {{"width", 8},   {"height", 6},          {"samples", 4},
             {"agree", 100}, {"ambiguous_total", 2}, {"ambiguous", {{"edge_band", 2}, {"depth_tie", 0}, {"clip_boundary", 0}}},
             {"genuine_total", genuine},
+            {"genuine_reasons", genuine ? "visibility " + std::to_string(genuine) : "-"},
             {"genuine", {{"visibility", genuine}, {"barycentrics", 0}, {"depth", 0}, {"color", 0}}},
             {"max_color_error", 1}, {"raster_ms", 1.25}, {"oracle_ms", 3.5}, {"oracle_mode", "robust"}};
 }
@@ -50,6 +51,12 @@ TEST(ReportPage, theIndexHasAnEscapedRowPerSceneFailingFirstEachLinkingToItsPage
     for (const char* link : {"href=\"c.html\"", "href=\"t.html\"", "src=\"c.diff.png\"", "src=\"t.diff.png\""})
         EXPECT_EQ(count_of(html, link), std::string(link).find("html") != std::string::npos ? 2u : 1u) << link;
     EXPECT_NE(html.find("2 scenes, 1 with genuine disagreements"), std::string::npos);
+    // The reasons are the comparison's own line: a passing scene's raw counts (a class its precision modes leave
+    // unjudged) give it none.
+    nlohmann::json unjudged = counts(0);
+    unjudged["genuine"]["visibility"] = 5;
+    const std::string passing = report_html({{"float_edges", unjudged, "f.r.png", "f.o.png", "f.d.png", "f.html"}});
+    EXPECT_NE(passing.find("<td class=\"why\" data-value=\"\"></td>"), std::string::npos) << passing;
     EXPECT_EQ(html.find("http:"), std::string::npos);  // self-contained: nothing from the network
     EXPECT_EQ(html.find("https:"), std::string::npos);
 }
