@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "harness/comparison/decoded_image.h"
+#include "harness/comparison/pixel_evidence.h"
 #include "oracle/compare/layer_check.h"
 #include "oracle/reference/layer_caster.h"
 #include "oracle/reference/reference_geometry.h"
@@ -183,7 +184,9 @@ void judge_colour_files(const JudgedFiles& files, const oracle::PixelBounds& bou
                         Comparison& out) {
     ColourVerdicts& colour = out.colour;
     colour.written = true;
-    const Image png = decoded_file(files.colour_png), ppm = decoded_file(files.colour_ppm);
+    colour.png_image = decoded_file(files.colour_png);
+    const Image& png = colour.png_image;
+    const Image ppm = decoded_file(files.colour_ppm);
     colour.png = oracle::check_colours(bounds, pixels_with_channels(png, bounds.channels), run.image);  // RGB or RGBA
     colour.ppm = oracle::check_colours(bounds, pixels_with_channels(ppm, 3), run.image);  // PPM holds no alpha
     const size_t pixels = colour.png.genuine_pixels.size();
@@ -287,6 +290,8 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options) {
     if (options.colour_output) judge_colour_files(files, bounds, run, out);
     tally_open_pixels(bounds, out);
     if (options.depth_output) judge_depth_files(files, out);
+    if (options.evidence_pixels > 0)
+        out.evidence = pixel_evidence({&out, &reference, &offsets, &bounds, options.evidence_pixels});
     out.compare_ms = milliseconds_since(start);
     return out;
 }

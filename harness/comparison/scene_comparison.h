@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/comparison/judged_classes.h"
 #include "oracle/compare/colour_check.h"
 #include "oracle/compare/depth_image_check.h"
@@ -31,12 +33,16 @@ struct ComparisonOptions {
     bool colour_output = true;
     bool depth_output = true;
     const Renderer* renderer = nullptr;  // what renders the frame: null for raster's own (RasterRenderer)
+    // The report's pixel inspector: the evidence of at most this many pixels (pixel_evidence.h) kept in
+    // Comparison::evidence; 0 builds none.
+    size_t evidence_pixels = 0;
 };
 
 // The colour image's verdicts, per file format.
 struct ColourVerdicts {
     bool written = false;
     oracle::ColourCheck png, ppm;     // per pixel, the file decoded
+    Image png_image;                  // the PNG file as decoded: the bytes judged
     std::vector<uint8_t> genuine;     // per pixel: outside its bounds in either file
     uint64_t genuine_pixels = 0;      // how many (of them shadow and transparency ones, below)
 };
@@ -82,6 +88,7 @@ struct Comparison {
     TransparencyVerdicts transparency;
     DepthVerdicts depth;
     JudgedClasses judged;  // what the frame's precision modes let the oracle judge
+    nlohmann::json evidence;  // pixel_evidence's, when ComparisonOptions::evidence_pixels asked for it; else null
     double raster_ms = 0;   // raster's in-process frame time (RenderStats::ms_total)
     double write_ms = 0;    // the job's encoding and writing
     double oracle_ms = 0;   // the oracle: geometry, BVH build, one ray per sample, shading and resolve

@@ -70,37 +70,50 @@ function disagreementsAt(x, y) {
     d.file + ': raster ' + d.raster.join(' ') + ', allowed ' + d.allowed.map(r => r[0] + '-' + r[1]).join(' ') +
     ', oracle ' + d.oracle.join(' ')).join('; ');
 }
-// The inspector: the evidence the report wrote beside the page (window.rasterEvidence) for pixel (x, y), a row per
-// sample. A pixel it does not list has every sample agreeing.
+// The inspector: the evidence the report wrote beside the page (window.rasterEvidence) for pixel (x, y): the pixel's
+// state, its bytes on both sides with the interval allowed, its colour, shadow and layer verdicts, and a row per
+// sample with the excuse's figure and bound. A pixel it does not list has every sample agreeing.
 const genuineClasses = ['visibility', 'barycentrics', 'depth'];
+const byteText = bytes => bytes ? bytes.join(' ') : 'not written';
+function pixelSummary(x, y, p) {
+  const lines = ['Pixel (' + x + ', ' + y + '): ' + p.state + ', ' + p.samples.length + ' samples.',
+                 'raster ' + byteText(p.raster) + ', oracle ' + byteText(p.oracle) + ', allowed ' +
+                 (p.allowed ? p.allowed.map(r => r[0] + '-' + r[1]).join(' ') : 'none: not judged (' + p.state + ')') + '.'];
+  if (p.colour) lines.push('colour: ' + p.colour + '.');
+  if (p.shadows) lines.push('shadow verdicts met: ' + (p.shadows.length ? p.shadows.join(', ') : 'none') + '.');
+  if (p.layers !== undefined) lines.push('transparent layers: ' + (p.layers ? 'left open by ' + p.layers : 'decided') + '.');
+  return lines.join(' ');
+}
 function showEvidence(x, y) {
   const status = document.querySelector('.inspector-status'), table = document.querySelector('table.samples');
   table.textContent = '';
   const evidence = window.rasterEvidence;
   if (!evidence) { status.textContent = 'No evidence file beside this page.'; return; }
-  const samples = (evidence.pixels || {})[x + ',' + y];
-  if (!samples) {
+  const pixel = (evidence.pixels || {})[x + ',' + y];
+  if (!pixel) {
     status.textContent = 'Pixel (' + x + ', ' + y + '): every one of its ' + evidence.samples +
-      ' samples agrees with the oracle' + (evidence.unlisted > 0 ? ' (or is past the ' + evidence.listed +
-      ' pixels listed; ' + evidence.unlisted + ' more were left out)' : '') + '.';
+      ' samples agrees with the oracle and its colour is inside its interval' + (evidence.unlisted > 0 ?
+      ' (or it is past the ' + evidence.listed + ' pixels listed; ' + evidence.unlisted + ' more were left out)' : '') + '.';
     return;
   }
-  status.textContent = 'Pixel (' + x + ', ' + y + '): ' + samples.length + ' samples.';
+  status.textContent = pixelSummary(x, y, pixel);
   const head = table.insertRow();
   for (const title of ['sample', 'class', 'raster triangle', 'raster barycentrics', 'raster depth',
-                       'oracle triangle', 'oracle barycentrics', 'oracle depth']) {
+                       'oracle triangle', 'oracle barycentrics', 'oracle depth', 'excuse', 'measured', 'bound']) {
     const th = document.createElement('th');
     th.textContent = title;
     head.appendChild(th);
   }
-  samples.forEach((s, k) => {
+  pixel.samples.forEach((s, k) => {
     const row = table.insertRow();
     row.className = genuineClasses.includes(s[0]) ? 'genuine' : s[0] === 'agree' ? 'agree' : 'ambiguous';
-    const cells = [k, s[0], s[1] < 0 ? 'none' : s[1], s[2].join(' '), s[3], s[4] < 0 ? 'none' : s[4], s[5].join(' '), s[6]];
+    const cells = [k, s[0], s[1] < 0 ? 'none' : s[1], s[2].join(' '), s[3], s[4] < 0 ? 'none' : s[4], s[5].join(' '),
+                   s[6], s[7], s[8] === null ? '-' : s[8], s[9] === null ? '-' : s[9]];
     cells.forEach((value, i) => {
       const td = row.insertCell();
       td.textContent = String(value);
       if (i === 1) td.className = 'class';
+      if (i >= 9) td.className = i === 9 ? 'measured' : 'bound';
     });
   });
 }

@@ -208,9 +208,36 @@ TEST_F(ReportInChromium, theIndexSortsAndEachScenePageZoomsPansSwipesAndReadsPix
     EXPECT_EQ(body_data(report_dom(chromium, work, dir / "index.html"), "data-rows-rendered"), "2");
 }
 
+// A script that, once the scene page has loaded, zooms about pixel (x, y) and clicks its centre on the diff map,
+// then marks the body with what the inspector shows (data-pixel, data-inspected: a row per sample, its class,
+// triangles, excuse, figure and bound; data-pixel-status), then fits and clicks pixel (0, 0) (data-corner-status).
+// At the fit's scale a pixel is under one CSS pixel, and events land on whole CSS pixels: the script first zooms
+// about the pixel (ten turns of the wheel, 9.3 times), then clicks its centre where the page now draws it.
+std::string click_pixel_script(const std::string& x, const std::string& y) {
+    return "<script>\nwindow.addEventListener('load', () => {\n"
+           "  const body = document.body, frame = document.querySelector('.pane[data-layer=\"diff\"] .frame');\n"
+           "  const box = frame.getBoundingClientRect();\n"
+           "  const centre = (px, py) => { const [panX, panY] = body.dataset.pan.split(',').map(Number), z = Number(body.dataset.zoom);\n"
+           "    return {clientX: box.left + panX + px * z, clientY: box.top + panY + py * z, bubbles: true}; };\n"
+           "  for (let turn = 0; turn < 10; ++turn)\n"
+           "    frame.dispatchEvent(new WheelEvent('wheel', Object.assign(centre(" + x + " + 0.5, " + y + " + 0.5), {deltaY: -1})));\n"
+           "  for (const type of ['pointerdown', 'pointerup']) frame.dispatchEvent(new PointerEvent(type, centre(" + x +
+           " + 0.5, " + y + " + 0.5)));\n"
+           "  const rows = Array.from(document.querySelectorAll('table.samples tr')).slice(1);\n"
+           "  body.dataset.inspected = body.dataset.pixel + ': ' + rows.map(row => row.cells[1].textContent + ' ' +\n"
+           "    row.cells[2].textContent + ' ' + row.cells[5].textContent + ' ' + row.cells[8].textContent + ' ' +\n"
+           "    row.cells[9].textContent + ' ' + row.cells[10].textContent).join('; ');\n"
+           "  body.dataset.pixelStatus = document.querySelector('.inspector-status').textContent;\n"
+           "  document.querySelector('button[data-zoom=\"fit\"]').click();\n"
+           "  for (const type of ['pointerdown', 'pointerup']) frame.dispatchEvent(new PointerEvent(type, centre(0.5, 0.5)));\n"
+           "  body.dataset.cornerStatus = document.querySelector('.inspector-status').textContent;\n"
+           "});\n</script>\n";
+}
+
 // The inspector: the test reads the evidence file the report wrote beside the teapot's page, picks its first pixel,
-// and a script clicks that pixel's centre on the diff map; the inspector's table must show a row per sample with
-// the classes and triangles the file gives. A pixel the file does not list shows as every sample agreeing.
+// and a script clicks that pixel's centre on the diff map; the inspector must show the pixel's state and bytes on
+// both sides, and a row per sample with the class, triangles and excuse (its figure and bound) the file gives. A
+// pixel the file does not list shows as every sample agreeing.
 TEST_F(ReportInChromium, theInspectorShowsEachSampleOfTheClickedPixel) {
     const std::string chromium = find_chromium();
     ASSERT_FALSE(chromium.empty()) << "chromium is not installed (bash .ci/install installs it)";
@@ -225,38 +252,72 @@ TEST_F(ReportInChromium, theInspectorShowsEachSampleOfTheClickedPixel) {
     ASSERT_EQ(evidence["samples"], 4);
     ASSERT_FALSE(evidence["pixels"].empty()) << "the teapot at 4 samples has edge-band samples";
     const std::string key = evidence["pixels"].begin().key();
-    const nlohmann::json& samples = evidence["pixels"][key];
+    const nlohmann::json& pixel = evidence["pixels"][key];
+    const nlohmann::json& samples = pixel["samples"];
     const std::string x = key.substr(0, key.find(',')), y = key.substr(key.find(',') + 1);
-    // At the fit's scale a pixel is under one CSS pixel, and events land on whole CSS pixels: the script first
-    // zooms about the pixel (ten turns of the wheel, 9.3 times), then clicks its centre where the page now draws it.
-    const std::string click =
-        "<script>\nwindow.addEventListener('load', () => {\n"
-        "  const body = document.body, frame = document.querySelector('.pane[data-layer=\"diff\"] .frame');\n"
-        "  const box = frame.getBoundingClientRect();\n"
-        "  const centre = (px, py) => { const [panX, panY] = body.dataset.pan.split(',').map(Number), z = Number(body.dataset.zoom);\n"
-        "    return {clientX: box.left + panX + px * z, clientY: box.top + panY + py * z, bubbles: true}; };\n"
-        "  for (let turn = 0; turn < 10; ++turn)\n"
-        "    frame.dispatchEvent(new WheelEvent('wheel', Object.assign(centre(" + x + " + 0.5, " + y + " + 0.5), {deltaY: -1})));\n"
-        "  for (const type of ['pointerdown', 'pointerup']) frame.dispatchEvent(new PointerEvent(type, centre(" + x +
-        " + 0.5, " + y + " + 0.5)));\n"
-        "  const rows = Array.from(document.querySelectorAll('table.samples tr')).slice(1);\n"
-        "  body.dataset.inspected = body.dataset.pixel + ': ' + rows.map(row => row.cells[1].textContent + ' ' +\n"
-        "    row.cells[2].textContent + ' ' + row.cells[5].textContent).join('; ');\n"
-        "  document.querySelector('button[data-zoom=\"fit\"]').click();\n"
-        "  for (const type of ['pointerdown', 'pointerup']) frame.dispatchEvent(new PointerEvent(type, centre(0.5, 0.5)));\n"
-        "  body.dataset.cornerStatus = document.querySelector('.inspector-status').textContent;\n"
-        "});\n</script>\n";
+    const std::string click = click_pixel_script(x, y);
     const std::string dom = report_dom(chromium, work, with_script(dir / "teapot.html", click.c_str()));
     std::string want = key + ": ";
     for (size_t k = 0; k < samples.size(); ++k) {
         const auto triangle = [](const nlohmann::json& t) { return t.get<int64_t>() < 0 ? std::string("none") : t.dump(); };
+        const auto figure = [](const nlohmann::json& f) { return f.is_null() ? std::string("-") : f.dump(); };
         want += (k ? "; " : "") + samples[k][0].get<std::string>() + " " + triangle(samples[k][1]) + " " +
-                triangle(samples[k][4]);
+                triangle(samples[k][4]) + " " + samples[k][7].get<std::string>() + " " + figure(samples[k][8]) + " " +
+                figure(samples[k][9]);
     }
+    const auto bytes = [](const nlohmann::json& b) {
+        return std::to_string(b[0].get<int>()) + " " + std::to_string(b[1].get<int>()) + " " + std::to_string(b[2].get<int>());
+    };
+    ASSERT_EQ(pixel["state"], "ambiguous") << "an edge-band pixel of the teapot";
+    EXPECT_EQ(body_data(dom, "data-pixel-status"),
+              "Pixel (" + x + ", " + y + "): ambiguous, 4 samples. raster " + bytes(pixel["raster"]) + ", oracle " +
+                  bytes(pixel["oracle"]) + ", allowed none: not judged (ambiguous). colour: " +
+                  pixel["colour"].get<std::string>() + ".");
     EXPECT_EQ(body_data(dom, "data-inspected"), want) << dom.substr(0, 3000);
     // The corner pixel (0, 0) is background on both sides: not listed, every sample agreeing.
     EXPECT_EQ(evidence["pixels"].count("0,0"), 0u);
-    EXPECT_EQ(body_data(dom, "data-corner-status"), "Pixel (0, 0): every one of its 4 samples agrees with the oracle.");
+    EXPECT_EQ(body_data(dom, "data-corner-status"), "Pixel (0, 0): every one of its 4 samples agrees with the oracle and its colour is inside its "
+              "interval.");
+}
+
+// With shadows and glass: a pixel the shadow model or the layers left open shows those verdicts in the inspector.
+TEST_F(ReportInChromium, theInspectorShowsAPixelsShadowAndLayerVerdicts) {
+    const std::string chromium = find_chromium();
+    ASSERT_FALSE(chromium.empty()) << "chromium is not installed (bash .ci/install installs it)";
+    const fs::path dir = work / "report";
+    std::ostringstream out, err;
+    ASSERT_EQ(run({"raster", "report", kCorpus + "shadows_and_glass.yaml", "-o", dir.string()}, out, err), 0) << err.str();
+    const std::string script = read_text(dir / "shadows_and_glass.evidence.js");
+    const std::string prefix = "window.rasterEvidence = ";
+    const nlohmann::json evidence = nlohmann::json::parse(script.substr(prefix.size(), script.rfind(';') - prefix.size()));
+    // The first pixel the shadow model left open, and the first the layers left open.
+    std::string shadow_key, layer_key;
+    for (const auto& [at, pixel] : evidence["pixels"].items()) {
+        if (shadow_key.empty() && pixel["shadows"].dump().find("open_") != std::string::npos) shadow_key = at;
+        if (layer_key.empty() && !pixel["layers"].is_null()) layer_key = at;
+    }
+    ASSERT_FALSE(shadow_key.empty()) << "the scene's shadow edges leave some pixel open";
+    ASSERT_FALSE(layer_key.empty()) << "the glass's edges leave some pixel open";
+    for (const std::string& key : {shadow_key, layer_key}) {
+        const nlohmann::json& pixel = evidence["pixels"][key];
+        const std::string x = key.substr(0, key.find(',')), y = key.substr(key.find(',') + 1);
+        const std::string dom =
+            report_dom(chromium, work, with_script(dir / "shadows_and_glass.html", click_pixel_script(x, y).c_str()));
+        const std::string status = body_data(dom, "data-pixel-status");
+        std::string verdicts, allowed;
+        for (const auto& verdict : pixel["shadows"]) verdicts += (verdicts.empty() ? "" : ", ") + verdict.get<std::string>();
+        for (const auto& range : pixel["allowed"])
+            allowed += (allowed.empty() ? "" : " ") + range[0].dump() + "-" + range[1].dump();
+        EXPECT_NE(status.find("Pixel (" + x + ", " + y + "): " + pixel["state"].get<std::string>()), std::string::npos)
+            << status;
+        EXPECT_NE(status.find("shadow verdicts met: " + (verdicts.empty() ? "none" : verdicts) + "."), std::string::npos)
+            << status;
+        EXPECT_NE(status.find("transparent layers: " + (pixel["layers"].is_null()
+                                                            ? std::string("decided")
+                                                            : "left open by " + pixel["layers"].get<std::string>()) + "."),
+                  std::string::npos) << status;
+        if (!allowed.empty()) EXPECT_NE(status.find("allowed " + allowed + "."), std::string::npos) << status;
+    }
 }
 
 TEST_F(ReportInChromium, badInputExitsTwoBeforeWritingAnything) {

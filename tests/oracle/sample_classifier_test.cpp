@@ -15,13 +15,9 @@ namespace raster::oracle {
 namespace {
 
 using testing::camera_at_origin;
+using testing::covered_by;
 using testing::reference_for;
 using testing::scene_with_triangles;
-
-SampleEntry covered_by(uint32_t id, const ReferenceGeometry& reference, const glm::dvec2& screen) {
-    const ExactHit hit = reference.hit(id, screen);
-    return {id, glm::vec3(hit.bary), static_cast<float>(hit.view_depth)};
-}
 
 const SampleEntry kEmpty{};
 

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "oracle/compare/sample_classifier.h"
 #include "oracle/reference/reference_geometry.h"
 #include "oracle/reference/scene_geometry.h"
 #include "raster/scene/scene.h"
@@ -49,5 +50,11 @@ inline Camera camera_at_origin(float fov_degrees = 45.0f, float near = 0.1f, flo
 
 // The reference geometry of a scene, as the comparison builds it.
 inline ReferenceGeometry reference_for(const Scene& scene) { return ReferenceGeometry(scene, oracle_scene(scene)); }
+
+// What a renderer that saw triangle `id` exactly at `screen` reports there (its hit rounded to float).
+inline SampleEntry covered_by(uint32_t id, const ReferenceGeometry& reference, const glm::dvec2& screen) {
+    const ExactHit hit = reference.hit(id, screen);
+    return {id, glm::vec3(hit.bary), static_cast<float>(hit.view_depth)};
+}
 
 }  // namespace raster::oracle::testing
