@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "harness/comparison/scene_comparison.h"
+#include "harness/comparison/comparison.h"
 #include "oracle/compare/sample_excuse.h"
 #include "oracle/reference/shadow_oracle.h"
 
