@@ -1,7 +1,11 @@
 // The viewer's page, HTML, style and script in one string: controls, the frame loop, orbit and zoom, animation
-// and cameras; the self-test's script (viewer_self_test.h) goes where the page marks it.
+// and cameras; the oracle check's script (viewer_check_script.h) and the self-test's (viewer_self_test.h) go
+// where the page marks them.
 #include "apps/viewer_page.h"
 
+#include <utility>
+
+#include "apps/viewer_check_script.h"
 #include "apps/viewer_self_test.h"
 
 namespace raster::cli {
@@ -16,7 +20,14 @@ constexpr const char* kPage = R"PAGE(<!doctype html>
   body { font: 14px/1.4 system-ui, sans-serif; margin: 0; background: #1b1c20; color: #e6e6e6; }
   header { padding: 8px 16px; border-bottom: 1px solid #333; }
   main { display: flex; flex-wrap: wrap; gap: 16px; padding: 16px; align-items: flex-start; }
+  .column { max-width: 100%; }
+  #check { margin-top: 12px; max-width: 640px; }
+  #stage { position: relative; display: inline-block; max-width: 100%; line-height: 0; }
   #frame { display: block; max-width: 100%; background: #000; cursor: grab; touch-action: none; user-select: none; }
+  #overlay { position: absolute; left: 0; top: 0; width: 100%; height: 100%; pointer-events: none;
+             image-rendering: pixelated; }
+  .swatch { display: inline-block; width: 0.9em; height: 0.9em; vertical-align: middle; margin-right: 0.4em; }
+  #check-legend div { font-size: 12px; }
   #frame.dragging { cursor: grabbing; }
   aside { width: 280px; }
   fieldset { border: 1px solid #444; margin: 0 0 12px; }
@@ -33,7 +44,16 @@ constexpr const char* kPage = R"PAGE(<!doctype html>
 <body>
 <header><strong>raster view</strong> <span id="scene"></span></header>
 <main>
-  <img id="frame" alt="the rendered frame" draggable="false">
+  <div class="column">
+  <div id="stage"><img id="frame" alt="the rendered frame" draggable="false"><img id="overlay" alt="the oracle's disagreement map over the frame" hidden></div>
+    <fieldset id="check"><legend>Oracle check</legend>
+      <button type="button" id="check-run">check this frame</button>
+      <label><input type="checkbox" id="check-overlay" checked disabled> overlay the disagreement map</label>
+      <div class="readout" id="check-result"></div>
+      <div id="check-legend"></div>
+      <div class="note">Renders the frame again through raster render's job and casts the Embree oracle's rays at
+        every sample, as raster compare does: seconds for a large frame.</div></fieldset>
+  </div>
   <aside>
     <fieldset id="shading"><legend>Shading</legend></fieldset>
     <fieldset id="samples"><legend>Samples per pixel</legend></fieldset>
@@ -83,7 +103,8 @@ const scene = {elevationLimit: 89, elevation: 0, distance: [0.05, 20], filter: '
 // Playing: the wall clock when the last frame was asked for, so the next advances by the time that passed.
 let playing = false, playedAt = 0;
 const frames = [];  // every frame shown: {params, index, ms, hash (self-test only)}
-let rendering = false, renderWanted = false, idleWaiters = [], shownUrl = null, drag = null;
+let rendering = false, renderWanted = false, idleWaiters = [], drag = null;
+const shownUrls = new Map();  // img element -> the object URL it shows
 
 const clamp = (x, low, high) => Math.min(high, Math.max(low, x));
 const wrapDegrees = (x) => ((((x + 180) % 360) + 360) % 360) - 180;
@@ -121,18 +142,19 @@ function fnv1a64(bytes) {
   return hash.toString(16).padStart(16, '0');
 }
 
-// Resolves on the load event, not img.decode(): Chromium's virtual time (the tests' --virtual-time-budget) waits
-// for loads but not for decode(), and dumped the DOM in the middle of the self-test.
-function showImage(bytes) {
+// Shows PNG bytes in an img element. Resolves on the load event, not img.decode(): Chromium's virtual time (the
+// tests' --virtual-time-budget) waits for loads but not for decode(), and dumped the DOM in the middle of the
+// self-test.
+function showPng(element, bytes) {
   return new Promise((resolve, reject) => {
     const url = URL.createObjectURL(new Blob([bytes], {type: 'image/png'}));
-    image.onload = () => {
-      if (shownUrl) URL.revokeObjectURL(shownUrl);
-      shownUrl = url;
+    element.onload = () => {
+      if (shownUrls.has(element)) URL.revokeObjectURL(shownUrls.get(element));
+      shownUrls.set(element, url);
       resolve();
     };
-    image.onerror = () => reject(new Error('the frame is not an image the browser decodes'));
-    image.src = url;
+    element.onerror = () => reject(new Error(`the ${element.id} is not an image the browser decodes`));
+    element.src = url;
   });
 }
 
@@ -151,7 +173,7 @@ async function renderLoop() {
         continue;
       }
       const bytes = new Uint8Array(await response.arrayBuffer());
-      await showImage(bytes);
+      await showPng(image, bytes);
       const frame = {params, index: Number(response.headers.get('X-Frame-Index')),
                      ms: Number(response.headers.get('X-Frame-Ms'))};
       if (selftest) frame.hash = fnv1a64(bytes);
@@ -202,6 +224,7 @@ function setPlaying(on) {
 
 function requestFrame() {
   renderWanted = true;
+  if (check.result && check.params !== JSON.stringify(renderParams())) checkIsStale();
   showControls();
   if (!rendering) renderLoop();
 }
@@ -210,6 +233,8 @@ function requestFrame() {
 function idle() {
   return rendering || renderWanted ? new Promise((resolve) => idleWaiters.push(resolve)) : Promise.resolve();
 }
+
+/*CHECK*/
 
 function markPressed(prefix, values, chosen) {
   for (const value of values) $(`${prefix}-${value}`).setAttribute('aria-pressed', String(value === chosen));
@@ -258,6 +283,13 @@ function buildControls() {
     requestFrame();
   });
   $('play').addEventListener('click', () => setPlaying(!playing));
+  $('check-run').addEventListener('click', () => {
+    if (playing) setPlaying(false);  // a check is of one frame
+    runCheck();
+  });
+  $('check-overlay').addEventListener('change', (event) => {
+    $('overlay').hidden = !event.target.checked || !check.result || check.params !== JSON.stringify(renderParams());
+  });
   $('time').addEventListener('input', (event) => {
     setPlaying(false);
     view.time = Number(event.target.value);
@@ -361,6 +393,7 @@ async function start() {
   }
   requestFrame();
   if (selftest) runSelfTest();
+  else if (new URLSearchParams(location.search).get('check') === '1') idle().then(runCheck);  // a link that checks
 }
 
 start();
@@ -374,8 +407,9 @@ start();
 const std::string& viewer_page_html() {
     static const std::string page = [] {
         std::string text = kPage;
-        const std::string marker = "/*SELF-TEST*/";
-        text.replace(text.find(marker), marker.size(), viewer_self_test_script());
+        for (const auto& [marker, script] : {std::pair{"/*SELF-TEST*/", viewer_self_test_script()},
+                                             std::pair{"/*CHECK*/", viewer_check_script()}})
+            text.replace(text.find(marker), std::string(marker).size(), script);
         return text;
     }();
     return page;

@@ -1,5 +1,5 @@
-// The viewer page's self-test script: clicks, drags, the wheel, the time slider, play, a camera pick and the shadow
-// and transparency switches, checked.
+// The viewer page's self-test script: clicks, drags, the wheel, the time slider, play, a camera pick, the shadow
+// and transparency switches and the oracle check, checked.
 #include "apps/viewer_self_test.h"
 
 namespace raster::cli {
@@ -37,6 +37,47 @@ async function animationSelfTest(report, step, before) {
     slider_changed_the_image: scrubbed.hash !== before.hash,
     play_advanced_the_instant: times.length >= 3 && times.every((t, i) => i === 0 || t !== times[i - 1]),
     pause_stopped_playing: !playing && $('play').getAttribute('aria-pressed') === 'false',
+  };
+}
+
+// The self-test's check steps: the check button pressed on the frame shown, its map laid over that frame (the bytes
+// the server made, at the frame's size), the counts shown, the overlay toggled off and on, then a shading change
+// that must hide the map of the earlier frame.
+async function checkSelfTest(report) {
+  const onScreen = frames[frames.length - 1];
+  $('check-run').dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
+  // The click starts the check; wait until the button is enabled again (the check has ended).
+  await new Promise((resolve) => {
+    const poll = () => ($('check-run').disabled || !check.result ? setTimeout(poll, 10) : resolve());
+    setTimeout(poll, 0);
+  });
+  const result = check.result, overlay = $('overlay');
+  const shownText = $('check-result').textContent;
+  const [over, under] = [overlay.getBoundingClientRect(), image.getBoundingClientRect()];
+  const overlayShown = !overlay.hidden && overlay.naturalWidth === image.naturalWidth &&
+                       overlay.naturalHeight === image.naturalHeight && over.left === under.left &&
+                       over.top === under.top && over.width === under.width && over.height === under.height;
+  $('check-overlay').click();
+  const toggledOff = overlay.hidden;
+  $('check-overlay').click();
+  const toggledOn = !overlay.hidden;
+  const other = view.shading === 'gouraud' ? 'phong' : 'gouraud';
+  $(`shading-${other}`).dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
+  await idle();
+  report.check = {index: result.index, verdict: result.verdict, frame_index: onScreen.index,
+                  frame_png_fnv1a64: result.frame_png_fnv1a64, map_png_fnv1a64: result.map_png_fnv1a64,
+                  map_shown_fnv1a64: check.mapHash, text: shownText, genuine_total: result.comparison.genuine_total,
+                  ambiguous_total: result.comparison.ambiguous_total};
+  report.checks = {
+    ...report.checks,
+    check_judged_the_frame_on_screen: result.frame_png_fnv1a64 === onScreen.hash,
+    check_overlay_is_the_servers_map: check.mapHash === result.map_png_fnv1a64,
+    check_overlay_lies_over_the_frame: overlayShown,
+    check_counts_shown: shownText.startsWith(result.verdict === 'pass' ? 'PASS' : 'FAIL') &&
+                        shownText.includes(`ambiguous ${result.comparison.ambiguous_total}`),
+    check_legend_shown: document.querySelectorAll('#check-legend .swatch').length === result.legend.length,
+    check_overlay_toggles: toggledOff && toggledOn,
+    check_hidden_once_the_view_moves: overlay.hidden && $('check-result').dataset.stale === 'yes',
   };
 }
 
@@ -94,6 +135,7 @@ async function runSelfTest() {
       report.checks = {...report.checks, camera_asked_for: picked.params.camera === String(other),
                        camera_changed_the_image: picked.hash !== before.hash};
     }
+    await checkSelfTest(report);
     report.checks = {
       ...report.checks,
       flat_asked_for: flat.params.shading === 'flat',

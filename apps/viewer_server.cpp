@@ -18,7 +18,7 @@ namespace {
 
 constexpr const char* kHost = "127.0.0.1";
 constexpr const char* kPlainText = "text/plain; charset=utf-8";
-constexpr const char* kPaths = "the viewer serves /, /render, /state and /log";
+constexpr const char* kPaths = "the viewer serves /, /render, /check, /check-map, /state and /log";
 
 // When this thread's current request arrived (set before routing, read by the log line).
 thread_local std::optional<Clock::time_point> request_start;
@@ -75,6 +75,12 @@ struct ViewerServer::Routes {
         });
         server.Get("/render", [this](const httplib::Request& request, httplib::Response& response) {
             render(request, response);
+        });
+        server.Get("/check", [this](const httplib::Request& request, httplib::Response& response) {
+            check(request, response);
+        });
+        server.Get("/check-map", [this](const httplib::Request& request, httplib::Response& response) {
+            check_map(request, response);
         });
         server.Get("/state", [this](const httplib::Request&, httplib::Response& response) {
             answer(response, 200, session.state().dump(), "application/json");
@@ -141,6 +147,29 @@ struct ViewerServer::Routes {
         } catch (const ViewRequestError& error) {
             refuse(response, 400, error.what());
         }
+    }
+
+    // GET /check: the oracle's verdict on the frame the parameters make (GET /render's), as JSON.
+    void check(const httplib::Request& request, httplib::Response& response) {
+        const ParsedViewRequest parsed = parse_view_request(request.params);
+        if (!parsed.error.empty()) return refuse(response, 400, parsed.error);
+        try {
+            answer(response, 200, session.check(parsed.request).result.dump(), "application/json");
+        } catch (const ViewRequestError& error) {
+            refuse(response, 400, error.what());
+        }
+    }
+
+    // GET /check-map?index=N: check N's disagreement map, while it is the last check.
+    void check_map(const httplib::Request& request, httplib::Response& response) {
+        const std::string text = request.get_param_value("index");
+        const bool digits = !text.empty() && text.size() <= 19 && text.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits || request.params.size() != 1)
+            return refuse(response, 400, "check-map takes one parameter, index, a check's number (sent: " +
+                                             loggable(request.target) + ")");
+        const std::optional<std::string> map = session.check_map(std::stoull(text));
+        if (!map) return refuse(response, 404, "check " + text + "'s map is gone: the viewer keeps the last check's only");
+        answer(response, 200, *map, "image/png");
     }
 
     void write_log_line(const httplib::Request& request, const httplib::Response& response) {

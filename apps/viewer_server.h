@@ -1,5 +1,5 @@
-// `raster view`'s HTTP server on 127.0.0.1: the page, GET /render, /state and /log, plain-text refusals, and one
-// line per request on the log stream.
+// `raster view`'s HTTP server on 127.0.0.1: the page, GET /render, /check, /check-map, /state and /log, plain-text
+// refusals, and one line per request on the log stream.
 #pragma once
 
 #include <memory>

@@ -1,10 +1,13 @@
-// The viewer's frames: a request applied to a copy of the kept scene, rendered, encoded, hashed and recorded.
+// The viewer's frames: a request applied to a copy of the kept scene, rendered, encoded, hashed and recorded; and
+// its checks: the same frame through raster compare's comparison.
 #include "apps/viewer_session.h"
 
 #include <cstdio>
 #include <set>
 
 #include "apps/viewer_orbit.h"
+#include "harness/comparison/comparison_output.h"
+#include "oracle/compare/diff_map.h"
 #include "raster/core/stopwatch.h"
 #include "raster/image/image.h"
 #include "raster/frame/render.h"
@@ -106,8 +109,7 @@ const Scene& ViewerSession::scene_with_filter(const std::optional<TextureFilter>
     return found->second;
 }
 
-ViewerFrame ViewerSession::render(const ViewRequest& request) {
-    const std::lock_guard<std::mutex> lock(mutex_);
+Scene ViewerSession::frame_for(const ViewRequest& request) {
     Scene frame = scene_with_filter(request.filter);  // a copy: no request changes what the next one starts from
     RenderSettings& settings = frame.settings;
     if (request.shading) settings.shading = *request.shading;
@@ -126,7 +128,13 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     frame.camera = orbit_camera(frame.camera, request.yaw_degrees, request.pitch_degrees, request.distance);
     if (std::string problem = settings_problem(settings); !problem.empty()) throw ViewRequestError(problem);
     if (const auto problem = camera_problem(frame.camera)) throw ViewRequestError(problem->message);
+    return frame;
+}
 
+ViewerFrame ViewerSession::render(const ViewRequest& request) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const Scene frame = frame_for(request);
+    const RenderSettings& settings = frame.settings;
     render_into(frame, options_, buffers_);
     const Clock::time_point encode_start = Clock::now();
     const std::vector<uint8_t> png = encode_image(buffers_.image, ImageFormat::png, options_.threads);
@@ -153,6 +161,50 @@ ViewerFrame ViewerSession::render(const ViewRequest& request) {
     records_.push_back(record);
     if (records_.size() > kMaxLoggedFrames) records_.pop_front();
     return result;
+}
+
+ViewerCheck ViewerSession::check(const ViewRequest& request) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    const Scene frame = frame_for(request);
+    if (std::string problem = harness::comparison_problem(frame); !problem.empty())
+        throw ViewRequestError("check: " + problem);
+    harness::ComparisonOptions options;  // raster's job as the viewer renders it
+    options.threads = options_.threads;
+    options.alpha = options_.alpha;
+    options.raster_path = options_.path;
+    const harness::Comparison comparison = harness::compare_scene(frame, options);
+    // The frame the check judged, encoded as GET /render encodes it: the page holds it to the frame on screen.
+    const std::vector<uint8_t> frame_png = encode_image(comparison.raster.image, ImageFormat::png, options_.threads);
+    const std::vector<uint8_t> map = encode_image(harness::diff_map(comparison), ImageFormat::png, options_.threads);
+    ViewerCheck result{{}, std::string(map.begin(), map.end())};
+    const uint64_t index = checks_done_++;
+    nlohmann::json legend = nlohmann::json::array();
+    for (const oracle::DiffMapKey& key : oracle::diff_map_legend()) {
+        char colour[8];
+        std::snprintf(colour, sizeof colour, "#%02x%02x%02x", key.rgb[0], key.rgb[1], key.rgb[2]);
+        legend.push_back({{"colour", colour}, {"meaning", key.meaning}});
+    }
+    nlohmann::json record = {{"index", index},
+                             {"verdict", comparison.genuine_total() == 0 ? "pass" : "fail"},
+                             {"genuine_total", comparison.genuine_total()},
+                             {"ambiguous_total", comparison.visibility.counts.ambiguous_total()},
+                             {"frame_png_fnv1a64", hex64(fnv1a_64({reinterpret_cast<const char*>(frame_png.data()),
+                                                                   frame_png.size()}))},
+                             {"map", "/check-map?index=" + std::to_string(index)},
+                             {"map_png_fnv1a64", hex64(fnv1a_64(result.map_png))}};
+    check_records_.push_back(record);
+    if (check_records_.size() > kMaxLoggedFrames) check_records_.pop_front();
+    last_map_png_ = result.map_png;
+    record["legend"] = std::move(legend);
+    record["comparison"] = harness::comparison_json(comparison);
+    result.result = std::move(record);
+    return result;
+}
+
+std::optional<std::string> ViewerSession::check_map(uint64_t index) const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (checks_done_ == 0 || index != checks_done_ - 1) return std::nullopt;
+    return last_map_png_;
 }
 
 nlohmann::json ViewerSession::state() const {
@@ -199,7 +251,9 @@ nlohmann::json ViewerSession::log() const {
     const std::lock_guard<std::mutex> lock(mutex_);
     nlohmann::json frames = nlohmann::json::array();
     for (const ViewerFrameRecord& record : records_) frames.push_back(to_json(record));
-    return {{"frames_served", frames_served_}, {"frames", frames}};
+    nlohmann::json checks = nlohmann::json::array();
+    for (const nlohmann::json& record : check_records_) checks.push_back(record);
+    return {{"frames_served", frames_served_}, {"frames", frames}, {"checks_done", checks_done_}, {"checks", checks}};
 }
 
 }  // namespace raster::cli

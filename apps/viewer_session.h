@@ -46,6 +46,13 @@ struct ViewerFrame {
     ViewerFrameRecord record;
 };
 
+// What the check button gets: the oracle's verdict on the frame a request makes (GET /check's body), and the
+// disagreement map over it (GET /check-map), as PNG.
+struct ViewerCheck {
+    nlohmann::json result;  // {index, verdict, frame_png_fnv1a64, map, map_png_fnv1a64, legend, comparison}
+    std::string map_png;
+};
+
 // Thrown by ViewerSession::render when a request, applied to this scene, is not a valid frame (a 400).
 class ViewRequestError : public std::runtime_error {
 public:
@@ -74,15 +81,25 @@ public:
     // Throws ViewRequestError when the request makes an invalid frame (say, 2 samples on a grid pattern).
     ViewerFrame render(const ViewRequest& request);
 
+    // Renders the request's frame through `raster render`'s job and the oracle (harness/comparison), as `raster
+    // compare` does, and keeps its map for check_map. Throws ViewRequestError as render does, and when the frame is
+    // past the comparison's memory cap.
+    ViewerCheck check(const ViewRequest& request);
+
+    // The map of check `index`, if it is the last check's (only that one is kept).
+    std::optional<std::string> check_map(uint64_t index) const;
+
     // GET /state: the scene, its own settings and camera, the request limits, the frames served and the last one.
     nlohmann::json state() const;
 
-    // GET /log: the records of the last kMaxLoggedFrames frames served, oldest first.
+    // GET /log: the records of the last kMaxLoggedFrames frames served, oldest first, and of the last checks.
     nlohmann::json log() const;
 
     static constexpr size_t kMaxLoggedFrames = 1000;
 
 private:
+    // The frame a request makes: a copy of the scene with the request applied, checked. Throws ViewRequestError.
+    Scene frame_for(const ViewRequest& request);
     // The scene as loaded, or a copy with every textured material's filter set (built once per filter).
     const Scene& scene_with_filter(const std::optional<TextureFilter>& filter);
     // What drawing from another of the file's cameras changes: the camera, the image's size (its aspect) and the
@@ -104,6 +121,9 @@ private:
     RenderResult buffers_;  // reused from frame to frame
     std::deque<ViewerFrameRecord> records_;
     uint64_t frames_served_ = 0;
+    std::deque<nlohmann::json> check_records_;  // each check's result without its comparison's detail
+    uint64_t checks_done_ = 0;
+    std::string last_map_png_;
     mutable std::mutex mutex_;
 };
 

@@ -7,6 +7,21 @@
 
 namespace raster::oracle {
 
+const std::vector<DiffMapKey>& diff_map_legend() {
+    static const std::vector<DiffMapKey> legend = {
+        {{kGenuineColor[0], kGenuineColor[1], kGenuineColor[2]}, "a genuine sample"},
+        {{kColourDisagreementColor[0], kColourDisagreementColor[1], kColourDisagreementColor[2]},
+         "a colour outside the range the oracle allows"},
+        {{kShadowDisagreementColor[0], kShadowDisagreementColor[1], kShadowDisagreementColor[2]},
+         "a colour a shadow test explains"},
+        {{kAmbiguousColor[0], kAmbiguousColor[1], kAmbiguousColor[2]},
+         "ambiguous: allowed by the precision model, or transparent layers left open"},
+        {{kShadowOpenColor[0], kShadowOpenColor[1], kShadowOpenColor[2]}, "a shadow verdict left open"},
+        {{90, 90, 90}, "agreeing (raster's image, dimmed to grey)"},
+    };
+    return legend;
+}
+
 OracleImage diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,
                const RasterPixels& raster_image, const ShadowLayers& shadows) {
     auto flag = [](const std::vector<uint8_t>* layer, size_t pixel) {

@@ -4,6 +4,7 @@
 // light's visibility open, and the raster image in dimmed grey where everything agrees.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,14 @@ inline constexpr uint8_t kColourDisagreementColor[3] = {220, 40, 220};
 inline constexpr uint8_t kAmbiguousColor[3] = {250, 210, 0};
 inline constexpr uint8_t kShadowDisagreementColor[3] = {255, 140, 0};
 inline constexpr uint8_t kShadowOpenColor[3] = {70, 150, 255};
+
+// A colour of the map and what it means: the legend the report's scene pages and the viewer's check show.
+struct DiffMapKey {
+    std::array<uint8_t, 3> rgb;
+    const char* meaning;
+};
+// Every colour the map paints; the agreeing grey as it shows a light surface (luma 200).
+const std::vector<DiffMapKey>& diff_map_legend();
 
 // The shadow and transparency layers of the map, per pixel, each optional (null or empty: none): genuine colour
 // disagreements a shadow test explains, the shadow verdicts met (ShadowTally bits; an open verdict paints the

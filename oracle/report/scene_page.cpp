@@ -1,8 +1,11 @@
 // A scene's page in the report (scene_page.h).
 #include "oracle/report/scene_page.h"
 
+#include <cstdio>
+
 #include <initializer_list>
 
+#include "oracle/compare/diff_map.h"
 #include "oracle/report/html_text.h"
 #include "oracle/report/scene_page_assets.h"
 
@@ -99,17 +102,15 @@ std::string view_image(const std::string& file, const std::string& alt, const nl
            number(c["height"]) + "\"" + attributes + ">";
 }
 
-// The disagreement map's colours (oracle/compare/diff_map.h; a test holds the two together) and what each means.
+// The disagreement map's colours and what each means (oracle/compare/diff_map.h).
 std::string legend() {
     std::string html = "<p class=\"legend\">Disagreement map:";
-    for (const auto& [colour, meaning] : {std::pair{"#e61414", "a genuine sample"},
-                                          {"#dc28dc", "a colour outside the range the oracle allows"},
-                                          {"#ff8c00", "a colour a shadow test explains"},
-                                          {"#fad200", "ambiguous: allowed by the precision model, or transparent layers left open"},
-                                          {"#4696ff", "a shadow verdict left open"},
-                                          {"#5a5a5a", "agreeing (raster's image, dimmed to grey)"}})
+    for (const oracle::DiffMapKey& key : oracle::diff_map_legend()) {
+        char colour[8];
+        std::snprintf(colour, sizeof colour, "#%02x%02x%02x", key.rgb[0], key.rgb[1], key.rgb[2]);
         html += std::string("<span class=\"swatch\" data-colour=\"") + colour + "\" style=\"background:" + colour +
-                "\"></span>" + meaning;
+                "\"></span>" + key.meaning;
+    }
     return html + "</p>\n";
 }
 

@@ -1,7 +1,7 @@
 // `raster view` in headless Chromium (Debian `chromium`, installed by .ci/install): the page, opened with
 // ?selftest=1, clicks #shading-flat, drags the image and turns the wheel over it as DOM events through the handlers
 // a user's input runs, and for an animated scene with two cameras moves the time slider, plays and pauses, and
-// picks the other camera. The test does not take the page's word for it: it checks the frames the server logged, with
+// picks the other camera, and presses the oracle check, reading its overlay back. The test does not take the page's word for it: it checks the frames the server logged, with
 // their parameters and PNG hashes, that the page showed exactly those bytes, and that the log's hashes are of the
 // bytes the server sends. Skipped, saying so, when Chromium is not installed.
 #include <signal.h>
@@ -94,6 +94,32 @@ void run_self_test(const std::string& chromium, const std::string& scene, SelfTe
     run.log = nlohmann::json::parse(run.viewer.client().Get("/log")->body);
 }
 
+// The check button, pressed by the self-test: the server logged the check the page showed, of the frame on screen,
+// its map is the bytes the page laid over the frame (fetched again here), only the last map is kept, and the page's
+// own checks of the overlay held.
+void expect_check_of_the_frame_on_screen(SelfTestRun& run) {
+    const nlohmann::json& report = run.report;
+    const nlohmann::json& frames = run.log["frames"];
+    ASSERT_TRUE(report.contains("check")) << "the self-test did not press check";
+    const nlohmann::json& shown_check = report["check"];
+    ASSERT_EQ(run.log["checks"].size(), 1u);
+    const nlohmann::json& logged_check = run.log["checks"][0];
+    EXPECT_EQ(logged_check["index"], shown_check["index"]);
+    EXPECT_EQ(logged_check["map_png_fnv1a64"], shown_check["map_shown_fnv1a64"]);
+    EXPECT_EQ(logged_check["frame_png_fnv1a64"], frames[shown_check["frame_index"].get<size_t>()]["png_fnv1a64"]);
+    const std::string map_path = "/check-map?index=" + logged_check["index"].dump();
+    const httplib::Result map = run.viewer.client().Get(map_path.c_str());
+    ASSERT_TRUE(map);
+    EXPECT_EQ(map->status, 200);
+    EXPECT_EQ(fnv1a_hex(map->body), logged_check["map_png_fnv1a64"]);
+    const std::string next_path = "/check-map?index=" + std::to_string(logged_check["index"].get<int>() + 1);
+    EXPECT_EQ(run.viewer.client().Get(next_path.c_str())->status, 404);
+    for (const char* check : {"check_judged_the_frame_on_screen", "check_overlay_is_the_servers_map",
+                              "check_overlay_lies_over_the_frame", "check_counts_shown", "check_legend_shown",
+                              "check_overlay_toggles", "check_hidden_once_the_view_moves"})
+        EXPECT_EQ(report["checks"][check], true) << check;
+}
+
 TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSends) {
     const std::string chromium = find_chromium();
     if (chromium.empty()) GTEST_SKIP() << "chromium is not installed (bash .ci/install installs it)";
@@ -155,6 +181,12 @@ TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSe
     ASSERT_TRUE(again);
     EXPECT_EQ(fnv1a_hex(again->body), (*dragged)["png_fnv1a64"]);
 
+    // The check button: on the teapot, however it is viewed, raster agrees with the oracle, with edge-band samples.
+    ASSERT_NO_FATAL_FAILURE(expect_check_of_the_frame_on_screen(run));
+    EXPECT_EQ(run.log["checks"][0]["verdict"], "pass");
+    EXPECT_EQ(run.log["checks"][0]["genuine_total"], 0);
+    EXPECT_GT(run.log["checks"][0]["ambiguous_total"].get<int>(), 0);
+
     // And the page's own verdict.
     EXPECT_EQ(report["pass"], true);
     EXPECT_NE(dom.find("data-selftest=\"pass\""), std::string::npos);
@@ -215,6 +247,7 @@ TEST(ViewerInChromium, theTimeSliderPlayAndTheCameraButtonsAskForTheirFramesAndG
         find_frame(frames, 0, [](const nlohmann::json& f) { return f["transparency"] == "opaque"; });
     ASSERT_NE(opaque, nullptr) << "no frame was drawn opaque";
     EXPECT_NE((*opaque)["png_fnv1a64"], frames[(*opaque)["index"].get<size_t>() - 1]["png_fnv1a64"]);
+    ASSERT_NO_FATAL_FAILURE(expect_check_of_the_frame_on_screen(run));
     EXPECT_EQ(run.report["pass"], true);
     EXPECT_EQ(run.viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << run.viewer.log();
 }

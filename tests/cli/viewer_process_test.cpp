@@ -117,7 +117,12 @@ TEST_F(ViewerHttp, badRequestsGetAPlainTextReasonAndTheServerKeepsServing) {
         {{400, "msaa must be 0 or 1, got 'yes'\n"}, {0, "/render?msaa=yes"}},
         {{400, "the standard pattern has 1, 2, 4, 8 or 16 samples, not 3\n"}, {0, "/render?samples=3"}},
         {{400, "parameter 'yaw' is given more than once\n"}, {0, "/render?yaw=1&yaw=2"}},
-        {{404, "not found: /render.png (the viewer serves /, /render, /state and /log)\n"}, {0, "/render.png"}},
+        {{404, "not found: /render.png (the viewer serves /, /render, /check, /check-map, /state and /log)\n"},
+         {0, "/render.png"}},
+        {{400, "samples must be a whole number, got 'x'\n"}, {0, "/check?samples=x"}},
+        {{400, "check-map takes one parameter, index, a check's number (sent: /check-map?index=-1)\n"},
+         {0, "/check-map?index=-1"}},
+        {{404, "check 0's map is gone: the viewer keeps the last check's only\n"}, {0, "/check-map?index=0"}},
     };
     for (const auto& [expected, request] : refusals) {
         const auto [status, body] = get(request.second);

@@ -1,12 +1,16 @@
 // `raster view`'s frames in-process: the first frame is `raster render`'s image, a request changes only its own
-// frame, bad frames are refused, the filter reaches textured materials, and the log records what was sent. PNG bytes
+// frame, bad frames are refused, the filter reaches textured materials, a check is the comparison of its frame, and
+// the log records what was sent. PNG bytes
 // are compared with ==, so that a failure does not print them.
 #include "apps/viewer_session.h"
 
 #include <gtest/gtest.h>
 
+#include "harness/comparison/comparison_output.h"
+#include "oracle/compare/diff_map.h"
 #include "raster/compat/scene_loader.h"
 #include "raster/image/image.h"
+#include "raster/scene/validation.h"
 #include "raster/frame/render.h"
 #include "raster/transform/scene_pose.h"
 
@@ -182,6 +186,49 @@ TEST(ViewerSession, theLogAndStateSayWhatWasServed) {
     EXPECT_EQ(state["scene_settings"]["shading"], "blinn-phong");  // the scene's own, unchanged
     EXPECT_EQ(state["scene_settings"]["filter"], "none");
     EXPECT_NEAR(state["camera"]["elevation_degrees"].get<double>(), 18.07, 0.01);
+}
+
+// The check is `raster compare`'s comparison of the request's frame: on the scene as loaded, the same counts and
+// the same map as harness::compare_scene gives; on another view, the frame the viewer serves for it.
+TEST(ViewerSession, aCheckIsTheComparisonOfTheRequestedFrame) {
+    const Scene scene = load_scene(kScenes + "teapot.yaml");
+    ViewerSession session(scene, frame_options());
+    const ViewerCheck checked = session.check({});
+    const harness::Comparison direct = harness::compare_scene(scene, harness::ComparisonOptions{});
+    const nlohmann::json& c = checked.result["comparison"];
+    EXPECT_EQ(c["genuine_total"], direct.genuine_total());
+    EXPECT_EQ(c["ambiguous_total"], direct.visibility.counts.ambiguous_total());
+    EXPECT_GT(direct.visibility.counts.ambiguous_total(), 0u);
+    EXPECT_EQ(checked.result["verdict"], "pass");
+    const std::vector<uint8_t> map = encode_image(harness::diff_map(direct), ImageFormat::png);
+    EXPECT_TRUE(checked.map_png == std::string(map.begin(), map.end()));
+    EXPECT_EQ(checked.result["map_png_fnv1a64"], hex64(fnv1a_64(checked.map_png)));
+    EXPECT_EQ(checked.result["legend"].size(), oracle::diff_map_legend().size());
+    // Only the last check's map is kept.
+    EXPECT_TRUE(session.check_map(0) == checked.map_png);
+    ViewRequest orbited = shaded(ShadingMode::gooch);
+    orbited.yaw_degrees = 40.0;
+    orbited.samples = 4;
+    const ViewerCheck second = session.check(orbited);
+    EXPECT_EQ(second.result["index"], 1);
+    EXPECT_FALSE(session.check_map(0).has_value());
+    EXPECT_EQ(second.result["frame_png_fnv1a64"], hex64(fnv1a_64(session.render(orbited).png)));
+    EXPECT_EQ(second.result["comparison"]["samples"], 4);
+    EXPECT_EQ(session.log()["checks"].size(), 2u);
+    // A frame raster renders but that is past the comparison's memory cap is refused, not attempted.
+    ViewRequest sixteen;
+    sixteen.samples = 16;
+    Scene large = scene;
+    large.settings.width = large.settings.height = 2800;
+    ASSERT_TRUE(settings_problem(large.settings).empty());
+    ViewerSession large_session(large, frame_options());
+    try {
+        large_session.check(sixteen);
+        ADD_FAILURE() << "a 2800 x 2800 frame at 16 samples was compared";
+    } catch (const ViewRequestError& error) {
+        EXPECT_EQ(std::string(error.what()).rfind("check: comparing a 2800x2800 image with 16 samples", 0), 0u)
+            << error.what();
+    }
 }
 
 TEST(ViewerSession, fnv1aIsTheStandardOne) {
