@@ -1,5 +1,5 @@
 // The viewer page's self-test script: clicks, drags, the wheel, the time slider, play, a camera pick, the shadow
-// and transparency switches and the oracle check, checked.
+// and transparency switches, the sample count, MSAA, the filter, the camera reset and the oracle check, checked.
 #include "apps/viewer_self_test.h"
 
 namespace raster::cli {
@@ -38,6 +38,37 @@ async function animationSelfTest(report, step, before) {
     play_advanced_the_instant: times.length >= 3 && times.every((t, i) => i === 0 || t !== times[i - 1]),
     pause_stopped_playing: !playing && $('play').getAttribute('aria-pressed') === 'false',
   };
+}
+
+// The self-test's steps through the remaining controls: another sample count, MSAA, a texture filter (a textured
+// scene) and the camera reset, each checked to ask for its frame; the sample count and the reset (from an orbited
+// view) to change it.
+async function controlsSelfTest(report, step) {
+  const click = (id) => () => $(id).dispatchEvent(new MouseEvent('click', {bubbles: true, cancelable: true, view: window}));
+  const beforeSamples = frames[frames.length - 1];
+  const samples = view.samples === 4 ? 16 : 4;
+  const sampled = await step('samples ' + samples, click(`samples-${samples}`));
+  const msaaWas = view.msaa;
+  const msaa = await step('msaa', () => $('msaa').click());  // a checkbox: the click toggles it and fires change
+  const checks = {
+    samples_asked_for: sampled.params.samples === String(samples),
+    samples_changed_the_image: sampled.hash !== beforeSamples.hash,
+    msaa_asked_for: msaa.params.msaa === (msaaWas ? '0' : '1') && $('msaa').checked === !msaaWas,
+  };
+  if (scene.textured) {
+    const filter = FILTERS.find((f) => f !== (view.filter || scene.filter));
+    const filtered = await step('filter ' + filter, click(`filter-${filter}`));
+    checks.filter_asked_for = filtered.params.filter === filter &&
+                              $(`filter-${filter}`).getAttribute('aria-pressed') === 'true';
+  }
+  const beforeReset = frames[frames.length - 1];
+  const reset = await step('camera reset', click('camera-reset'));
+  const atHome = (params) => params.yaw === '0.00' && params.pitch === '0.00' && params.distance === '1.0000';
+  checks.reset_asked_for = atHome(reset.params);
+  // Picking a camera already resets the orbit: then the reset has nothing to change.
+  checks.reset_changed_the_image = atHome(beforeReset.params) ? reset.hash === beforeReset.hash
+                                                              : reset.hash !== beforeReset.hash;
+  report.checks = {...report.checks, ...checks};
 }
 
 // The self-test's check steps: the check button pressed on the frame shown, its map laid over that frame (the bytes
@@ -135,6 +166,7 @@ async function runSelfTest() {
       report.checks = {...report.checks, camera_asked_for: picked.params.camera === String(other),
                        camera_changed_the_image: picked.hash !== before.hash};
     }
+    await controlsSelfTest(report, step);
     await checkSelfTest(report);
     report.checks = {
       ...report.checks,

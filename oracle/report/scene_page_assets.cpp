@@ -76,7 +76,8 @@ function disagreementsAt(x, y) {
 const genuineClasses = ['visibility', 'barycentrics', 'depth'];
 const byteText = bytes => bytes ? bytes.join(' ') : 'not written';
 function pixelSummary(x, y, p) {
-  const lines = ['Pixel (' + x + ', ' + y + '): ' + p.state + ', ' + p.samples.length + ' samples.',
+  const lines = ['Pixel (' + x + ', ' + y + '): ' + p.state + ', ' + p.samples.length +
+                 (p.samples.length === 1 ? ' sample.' : ' samples.'),
                  'raster ' + byteText(p.raster) + ', oracle ' + byteText(p.oracle) + ', allowed ' +
                  (p.allowed ? p.allowed.map(r => r[0] + '-' + r[1]).join(' ') : 'none: not judged (' + p.state + ')') + '.'];
   if (p.colour) lines.push('colour: ' + p.colour + '.');

@@ -57,7 +57,8 @@ window.addEventListener('load', () => {
 
 // A person's use of a scene page: a colour disagreement put at pixel (8, 5) of the diff map and a click there; the
 // wheel turned once (zoom in) over raster's pane at (100, 50); a drag on the oracle's pane from (200, 100) to
-// (150, 80); a click on the diff map at (300, 200); the swipe shown and its slider set to 30; then "1:1". What the
+// (150, 80); a click on the diff map at (300, 200); the swipe shown and its slider set to 30; then "1:1", "zoom
+// in", "zoom out" twice and "fit". What the
 // page shows after each step is kept on <body>, with the frame's width (the fit's scale follows from it).
 constexpr const char* kScenePageScript = R"(<script>
 window.addEventListener('load', () => {
@@ -100,6 +101,13 @@ window.addEventListener('load', () => {
   body.dataset.clip = document.querySelector('.pane.swipe img.over').style.clipPath;
   document.querySelector('button[data-zoom="1"]').click();
   body.dataset.actualZoom = body.dataset.zoom;
+  document.querySelector('button[data-zoom="in"]').click();
+  body.dataset.inZoom = body.dataset.zoom;
+  document.querySelector('button[data-zoom="out"]').click();
+  document.querySelector('button[data-zoom="out"]').click();
+  body.dataset.outZoom = body.dataset.zoom;
+  document.querySelector('button[data-zoom="fit"]').click();
+  body.dataset.refitZoom = body.dataset.zoom;
 });
 </script>
 )";
@@ -200,6 +208,10 @@ TEST_F(ReportInChromium, theIndexSortsAndEachScenePageZoomsPansSwipesAndReadsPix
     EXPECT_EQ(body_data(page, "data-swipe"), "30");
     EXPECT_EQ(body_data(page, "data-clip"), "inset(0px 0px 0px 30%)");
     EXPECT_EQ(body_data(page, "data-actual-zoom"), "1");
+    // The toolbar's zoom in doubles the scale, zoom out halves it, and fit returns to the fit's scale.
+    EXPECT_EQ(body_data(page, "data-in-zoom"), "2");
+    EXPECT_EQ(body_data(page, "data-out-zoom"), "0.5");
+    EXPECT_EQ(body_data(page, "data-refit-zoom"), body_data(page, "data-fit-zoom"));
 
     // The check can fail: with one image gone, the page is no longer marked rendered, nor its index row.
     fs::remove(dir / "single_triangle.oracle.png");

@@ -165,8 +165,22 @@ TEST(ViewerInChromium, clickingFlatAndDraggingTheImageChangeTheFramesTheServerSe
     ASSERT_NE(shadowed, nullptr) << "no frame after the wheel has shadows";
     EXPECT_NE((*shadowed)["png_fnv1a64"], frames[(*shadowed)["index"].get<size_t>() - 1]["png_fnv1a64"]);
 
+    // The sample count, MSAA and the camera reset: each a logged frame of its kind; the reset back at the scene's own
+    // camera, as the first frame was, with the first frame's eye.
+    const nlohmann::json* four = find_frame(frames, (*shadowed)["index"], [](const nlohmann::json& f) { return f["samples"] == 4; });
+    ASSERT_NE(four, nullptr) << "no frame at 4 samples";
+    EXPECT_NE((*four)["png_fnv1a64"], frames[(*four)["index"].get<size_t>() - 1]["png_fnv1a64"]);
+    const nlohmann::json* msaa = find_frame(frames, (*four)["index"], [](const nlohmann::json& f) { return f["msaa"] == true; });
+    ASSERT_NE(msaa, nullptr) << "no MSAA frame";
+    const nlohmann::json* reset = find_frame(frames, (*msaa)["index"], [](const nlohmann::json& f) {
+        return f["yaw"] == 0.0 && f["pitch"] == 0.0 && f["distance"] == 1.0;
+    });
+    ASSERT_NE(reset, nullptr) << "no frame after the reset is at the scene's own camera";
+    EXPECT_EQ((*reset)["eye"], first["eye"]);
+
     // The page showed those frames: the hash it took of the bytes it drew is the logged hash of the same frame.
-    ASSERT_EQ(report["steps"].size(), 5u);  // initial, flat, drag, wheel, shadows on
+    // initial, flat, drag, wheel, shadows on, samples 4, msaa, camera reset (the teapot has no texture to filter)
+    ASSERT_EQ(report["steps"].size(), 8u);
     for (const nlohmann::json& step : report["steps"]) {
         const nlohmann::json& shown = step["frame"];
         const size_t index = shown["index"];
@@ -247,6 +261,10 @@ TEST(ViewerInChromium, theTimeSliderPlayAndTheCameraButtonsAskForTheirFramesAndG
         find_frame(frames, 0, [](const nlohmann::json& f) { return f["transparency"] == "opaque"; });
     ASSERT_NE(opaque, nullptr) << "no frame was drawn opaque";
     EXPECT_NE((*opaque)["png_fnv1a64"], frames[(*opaque)["index"].get<size_t>() - 1]["png_fnv1a64"]);
+    // The texture filter (the leaves are textured): a frame with the filter the page asked for.
+    const nlohmann::json* filtered = find_frame(frames, 0, [](const nlohmann::json& f) { return f["filter"] != "scene"; });
+    ASSERT_NE(filtered, nullptr) << "no frame asked for a filter";
+    EXPECT_EQ(run.report["checks"]["filter_asked_for"], true);
     ASSERT_NO_FATAL_FAILURE(expect_check_of_the_frame_on_screen(run));
     EXPECT_EQ(run.report["pass"], true);
     EXPECT_EQ(run.viewer.process->stop(SIGTERM, std::chrono::seconds(10)), 0) << run.viewer.log();
