@@ -42,6 +42,7 @@ struct CommandLine::Parser {
             add_render_command(app),
             add_animate_command(app),
             add_compare_command(app),
+            add_grade_command(app),
             add_report_command(app),
             add_tradeoff_command(app),
             add_balboa_command(app),

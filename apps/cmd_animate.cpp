@@ -118,11 +118,7 @@ int run_animate(const AnimateFlags& flags, std::ostream& out, std::ostream& err)
 }  // namespace
 
 Command add_animate_command(CLI::App& app) {
-    auto flags = std::make_shared<AnimateFlags>();
-    register_animate_flags(app, *flags);
-    return {app.get_subcommand("animate"),
-            [flags](std::ostream& out, std::ostream& err) { return run_animate(*flags, out, err); },
-            [flags] { *flags = AnimateFlags{}; }};
+    return flags_command<AnimateFlags>(app, "animate", register_animate_flags, run_animate);
 }
 
 }  // namespace raster::cli

@@ -55,24 +55,18 @@ void register_compare_flags(CLI::App& app, CompareFlags& flags) {
     compare->add_option("--diff", flags.diff_out,
                         "Write a disagreement map: genuine samples red, genuine colour magenta, ambiguous yellow, "
                         "agreeing dimmed grey");
-    compare->add_flag("--fast-oracle", flags.fast_oracle,
-                      "Embree without RTC_SCENE_FLAG_ROBUST (faster, less careful; verdicts need the default)");
+    add_fast_oracle_flag(*compare, flags.fast_oracle);
 }
 
 int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err) {
     SceneFile file;
     Scene& scene = file.scene;
     try {
-        file = load_scene_file(flags.scene, load_options(flags.settings));
+        file = load_scene_with_flags(flags.scene, flags.settings);
         if (file.request.self_check)
             throw InputError(flags.scene, 0, 0,
                              "this file asks for a check of its own, not an image: `raster render` writes nothing to "
                              "compare (run it with `raster render`)");
-        try {
-            apply_settings_flags(flags.settings, scene);
-        } catch (const InputError& error) {  // a setting the flags made invalid: name the scene it is for
-            throw InputError(flags.scene, 0, 0, error.message());
-        }
         if (std::string problem = harness::comparison_problem(scene); !problem.empty())
             throw InputError(flags.scene, 0, 0, problem);
     } catch (const InputError& error) {
@@ -116,11 +110,7 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
 }  // namespace
 
 Command add_compare_command(CLI::App& app) {
-    auto flags = std::make_shared<CompareFlags>();
-    register_compare_flags(app, *flags);
-    return {app.get_subcommand("compare"),
-            [flags](std::ostream& out, std::ostream& err) { return run_compare(*flags, out, err); },
-            [flags] { *flags = CompareFlags{}; }};
+    return flags_command<CompareFlags>(app, "compare", register_compare_flags, run_compare);
 }
 
 }  // namespace raster::cli

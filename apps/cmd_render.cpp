@@ -125,11 +125,7 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 Command add_render_command(CLI::App& app) {
-    auto flags = std::make_shared<RenderFlags>();
-    register_render_flags(app, *flags);
-    return {app.get_subcommand("render"),
-            [flags](std::ostream& out, std::ostream& err) { return run_render(*flags, out, err); },
-            [flags] { *flags = RenderFlags{}; }};
+    return flags_command<RenderFlags>(app, "render", register_render_flags, run_render);
 }
 
 }  // namespace raster::cli

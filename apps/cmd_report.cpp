@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command.h"
+#include "apps/settings_flags.h"
 #include "apps/progress_bar.h"
 #include "apps/render_outputs.h"
 #include "harness/comparison/comparison_output.h"
@@ -56,7 +57,7 @@ void register_report_flags(CLI::App& app, ReportFlags& flags) {
     report->add_option("inputs", flags.inputs, "Scene files or directories (default: corpus/scenes)");
     report->add_option("-o,--output", flags.output_dir, "Directory to write the report into")->required();
     report->add_option("--samples", flags.samples, "Samples per pixel for every scene (default: each scene's own)");
-    report->add_flag("--fast-oracle", flags.fast_oracle, "Embree without RTC_SCENE_FLAG_ROBUST (faster, less careful)");
+    add_fast_oracle_flag(*report, flags.fast_oracle);
     report->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (results are the same for any count)")
         ->check(CLI::Range(0, 256));
     report->add_option("--junit", flags.junit_out,
@@ -247,11 +248,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 Command add_report_command(CLI::App& app) {
-    auto flags = std::make_shared<ReportFlags>();
-    register_report_flags(app, *flags);
-    return {app.get_subcommand("report"),
-            [flags](std::ostream& out, std::ostream& err) { return run_report(*flags, out, err); },
-            [flags] { *flags = ReportFlags{}; }};
+    return flags_command<ReportFlags>(app, "report", register_report_flags, run_report);
 }
 
 }  // namespace raster::cli

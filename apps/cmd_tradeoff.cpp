@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "apps/command.h"
+#include "apps/settings_flags.h"
 #include "apps/progress_bar.h"
 #include "oracle/reference/embree_device.h"
 #include "harness/tradeoff/pareto_plot.h"
@@ -60,8 +61,7 @@ void register_tradeoff_flags(CLI::App& app, TradeoffFlags& flags) {
         ->add_option("--reference-grid", flags.reference_grid,
                      "Side N of the reference oracle image's N x N sample grid (default 8: 64 samples per pixel)")
         ->check(CLI::Range(1, 16));
-    tradeoff->add_flag("--fast-oracle", flags.fast_oracle,
-                       "Embree without RTC_SCENE_FLAG_ROBUST (faster, less careful)");
+    add_fast_oracle_flag(*tradeoff, flags.fast_oracle);
     tradeoff
         ->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (errors are the same for any count)")
         ->check(CLI::Range(0, 256));
@@ -191,11 +191,7 @@ int run_tradeoff(const TradeoffFlags& flags, std::ostream& out, std::ostream& er
 }  // namespace
 
 Command add_tradeoff_command(CLI::App& app) {
-    auto flags = std::make_shared<TradeoffFlags>();
-    register_tradeoff_flags(app, *flags);
-    return {app.get_subcommand("tradeoff"),
-            [flags](std::ostream& out, std::ostream& err) { return run_tradeoff(*flags, out, err); },
-            [flags] { *flags = TradeoffFlags{}; }};
+    return flags_command<TradeoffFlags>(app, "tradeoff", register_tradeoff_flags, run_tradeoff);
 }
 
 }  // namespace raster::cli

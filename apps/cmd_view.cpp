@@ -110,11 +110,7 @@ int run_view(const ViewFlags& flags, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 Command add_view_command(CLI::App& app) {
-    auto flags = std::make_shared<ViewFlags>();
-    register_view_flags(app, *flags);
-    return {app.get_subcommand("view"),
-            [flags](std::ostream& out, std::ostream& err) { return run_view(*flags, out, err); },
-            [flags] { *flags = ViewFlags{}; }};
+    return flags_command<ViewFlags>(app, "view", register_view_flags, run_view);
 }
 
 }  // namespace raster::cli

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <ostream>
 
 #include <CLI/CLI.hpp>
@@ -19,10 +20,22 @@ struct Command {
     std::function<void()> reset;  // puts its flags back to their defaults, after each run of a reused app
 };
 
+// A subcommand whose flags live in a struct of their own: `add` registers them on `app` (adding the subcommand
+// `name`), `run` runs it, and each run's flags go back to the struct's defaults afterwards.
+template <typename Flags>
+Command flags_command(CLI::App& app, const char* name, void (*add)(CLI::App&, Flags&),
+                      int (*run)(const Flags&, std::ostream&, std::ostream&)) {
+    auto flags = std::make_shared<Flags>();
+    add(app, *flags);
+    return {app.get_subcommand(name), [flags, run](std::ostream& out, std::ostream& err) { return run(*flags, out, err); },
+            [flags] { *flags = Flags{}; }};
+}
+
 // One function per subcommand, each in apps/cmd_<name>.cpp.
 Command add_render_command(CLI::App& app);
 Command add_animate_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_grade_command(CLI::App& app);
 Command add_report_command(CLI::App& app);
 Command add_tradeoff_command(CLI::App& app);
 Command add_balboa_command(CLI::App& app);

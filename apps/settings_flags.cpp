@@ -113,4 +113,19 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     validate_scene(scene);  // the shadow maps' memory, which depends on the lights
 }
 
+SceneFile load_scene_with_flags(const std::string& path, const SettingsFlags& flags) {
+    SceneFile file = load_scene_file(path, load_options(flags));
+    try {
+        apply_settings_flags(flags, file.scene);
+    } catch (const InputError& error) {  // a setting the flags made invalid: name the scene it is for
+        throw InputError(path, 0, 0, error.message());
+    }
+    return file;
+}
+
+void add_fast_oracle_flag(CLI::App& command, bool& fast_oracle) {
+    command.add_flag("--fast-oracle", fast_oracle,
+                     "Embree without RTC_SCENE_FLAG_ROBUST (faster, less careful; verdicts need the default)");
+}
+
 }  // namespace raster::cli

@@ -45,4 +45,11 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene);
 // How the flags ask for the scene file to be read: --strict and --camera.
 inline SceneLoadOptions load_options(const SettingsFlags& flags) { return {flags.strict, flags.camera}; }
 
+// The scene file at `path` read as the flags ask, the flags applied to its scene. Throws InputError naming the file,
+// for what is wrong in it and for a setting the flags make invalid.
+SceneFile load_scene_with_flags(const std::string& path, const SettingsFlags& flags);
+
+// --fast-oracle, for the commands that run the oracle: Embree without its robust flag.
+void add_fast_oracle_flag(CLI::App& command, bool& fast_oracle);
+
 }  // namespace raster::cli

@@ -12,6 +12,7 @@
 #define STBI_ONLY_PNM
 #include <stb/stb_image.h>
 
+#include "raster/core/errors.h"
 #include "raster/core/file_io.h"
 
 namespace raster::harness {
@@ -33,6 +34,19 @@ Image decoded_file(const std::filesystem::path& path) {
     int width = 0, height = 0, channels = 0;
     stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height, &channels, 0);
     if (!pixels) return Image{};
+    Image decoded(width, height, channels);
+    std::copy(pixels, pixels + decoded.pixels.size(), decoded.pixels.begin());
+    stbi_image_free(pixels);
+    return decoded;
+}
+
+Image read_image_file(const std::filesystem::path& path, int channels) {
+    const std::string text = read_file_bytes(path, kMaxDecodedFileBytes);  // throws, naming the file
+    int width = 0, height = 0, file_channels = 0;
+    stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(text.data()), static_cast<int>(text.size()),
+                                            &width, &height, &file_channels, channels);
+    if (!pixels)
+        throw InputError(path.string() + ": not a PNG or PPM image stb_image decodes (" + stbi_failure_reason() + ")");
     Image decoded(width, height, channels);
     std::copy(pixels, pixels + decoded.pixels.size(), decoded.pixels.begin());
     stbi_image_free(pixels);

@@ -12,13 +12,10 @@
 #include <unistd.h>
 
 #include "harness/comparison/decoded_image.h"
+#include "harness/comparison/oracle_run.h"
 #include "harness/comparison/pixel_evidence.h"
-#include "oracle/compare/layer_check.h"
-#include "oracle/reference/layer_caster.h"
 #include "oracle/reference/reference_geometry.h"
 #include "oracle/reference/sample_positions.h"
-#include "oracle/reference/scene_geometry.h"
-#include "oracle/reference/shader.h"
 #include "oracle/reference/shadow_oracle.h"
 #include "raster/core/stopwatch.h"
 #include "raster/scene/validation.h"
@@ -107,75 +104,6 @@ JudgedFiles render_raster(const Scene& scene, const ComparisonOptions& options, 
     out.raster_ms = out.raster.stats.ms_total;
     out.write_ms = rendered.ms_write;
     return files;
-}
-
-// What the oracle derives of the scene, kept for the checks.
-struct OracleRun {
-    oracle::OracleScene geometry;
-    std::unique_ptr<oracle::ShadowOracle> shadows;
-    std::unique_ptr<oracle::OracleShader> shader;  // ShadowAnswer::exact
-    oracle::ResolveSettings resolve;
-    oracle::SampleLayers layers;
-    oracle::OracleImage image;
-    bool transparent = false;
-};
-
-// Stage 2: the oracle's own frame.
-OracleRun render_oracle(const Scene& scene, const ComparisonOptions& options, Comparison& out) {
-    OracleRun run;
-    run.geometry = oracle::oracle_scene(scene);
-    oracle::OracleOptions oracle_options;
-    oracle_options.mode = options.mode;
-    oracle_options.threads = options.threads;
-    oracle::render_oracle(scene, run.geometry, oracle_options, out.oracle_visibility);
-    if (has_shadows(scene) && scene.settings.shading != ShadingMode::unlit)
-        run.shadows = std::make_unique<oracle::ShadowOracle>(scene, run.geometry, options.threads);
-    run.shader =
-        std::make_unique<oracle::OracleShader>(scene, run.geometry, run.shadows.get(), oracle::ShadowAnswer::exact);
-    run.resolve = {scene.settings.samples, scene.settings.msaa, options.alpha, glm::dvec3(scene.settings.background)};
-    run.layers = oracle::trace_layers(scene, run.geometry, oracle_options);
-    run.transparent = !run.layers.first.empty();
-    run.image = oracle::render_image(*run.shader, out.oracle_visibility, run.resolve, options.threads,
-                                     run.transparent ? &run.layers : nullptr, scene.settings.transparency.mode);
-    out.oracle_image = image_of(run.image);
-    return run;
-}
-
-// Stage 4: the colour bounds every judged pixel must lie in.
-oracle::PixelBounds colour_bounds(const Scene& scene, const ComparisonOptions& options, const OracleRun& run,
-                                  const oracle::ReferenceGeometry& reference,
-                                  const std::vector<glm::dvec2>& offsets, Comparison& out) {
-    oracle::ColourInputs colour;
-    colour.oracle = &out.oracle_visibility;
-    colour.classes = &out.visibility.classes;
-    colour.reference = &reference;
-    const oracle::OracleShader allowed(scene, run.geometry, run.shadows.get(), oracle::ShadowAnswer::allowed);
-    std::unique_ptr<oracle::OracleShader> open;
-    if (run.shadows)
-        open = std::make_unique<oracle::OracleShader>(scene, run.geometry, run.shadows.get(), oracle::ShadowAnswer::open);
-    colour.shader = &allowed;
-    colour.open_shader = open.get();
-    colour.resolve = run.resolve;
-    colour.offsets = offsets;
-    colour.threads = options.threads;
-    oracle::LayerVerdicts layer_verdicts;
-    if (run.transparent) {
-        oracle::LayerCheckInputs layer_inputs;
-        layer_inputs.scene = &scene;
-        layer_inputs.layers = &run.layers;
-        layer_inputs.oracle = &out.oracle_visibility;
-        layer_inputs.reference = &reference;
-        for (uint32_t id = 0; id < run.geometry.triangles.size(); ++id)  // culled ones too: their facing may be uncertain
-            if (oracle::layered_material(oracle::triangle_material(scene, run.geometry.triangles[id])))
-                layer_inputs.transparent.push_back(id);
-        layer_inputs.offsets = offsets;
-        layer_inputs.threads = options.threads;
-        layer_verdicts = oracle::check_layers(layer_inputs);
-        colour.layers = &run.layers;
-        colour.layer_verdicts = &layer_verdicts;
-        colour.transparency = scene.settings.transparency.mode;
-    }
-    return oracle::pixel_bounds(colour);
 }
 
 // Stage 5a: the colour files against the bounds, each disagreement told apart as a shadow's or a transparent
@@ -270,7 +198,8 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options) {
     const JudgedFiles files = render_raster(scene, options, folder.path(), out);
 
     auto start = Clock::now();
-    const OracleRun run = render_oracle(scene, options, out);
+    const OracleRun run = run_oracle(scene, {options.mode, options.threads, options.alpha}, out.oracle_visibility);
+    out.oracle_image = image_of(run.image);
     out.oracle_ms = milliseconds_since(start);
 
     start = Clock::now();
@@ -286,7 +215,9 @@ Comparison compare_scene(const Scene& scene, const ComparisonOptions& options) {
     inputs.threads = options.threads;
     out.visibility = oracle::compare_visibility(inputs);
 
-    const oracle::PixelBounds bounds = colour_bounds(scene, options, run, reference, offsets, out);
+    // Stage 4: the colour bounds every judged pixel must lie in.
+    const oracle::PixelBounds bounds =
+        colour_bounds(scene, run, reference, offsets, out.oracle_visibility, out.visibility.classes, options.threads);
     if (options.colour_output) judge_colour_files(files, bounds, run, out);
     tally_open_pixels(bounds, out);
     if (options.depth_output) judge_depth_files(files, out);

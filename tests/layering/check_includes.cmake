@@ -10,7 +10,7 @@ file(GLOB_RECURSE sources RELATIVE ${ROOT}
 # The schemata build's switch is included by the generated copies of raster's sources through that build's own
 # include path (cmake/mutant_schemata.cmake), with its generated site table: it has no module folder to name.
 list(FILTER sources EXCLUDE REGEX "^mutants/switch/")
-set(roots "raster/(core|scene|transform|formats|gltf|compat|image|texture|simd|geometry|rasterize|shading|resolve|frame)/|oracle/(reference|compare|report)/|harness/(comparison|tradeoff)/|apps/|mutants/|properties/|fuzz/|bench/|tools/|tests/support/")
+set(roots "raster/(core|scene|transform|formats|gltf|compat|image|texture|simd|geometry|rasterize|shading|resolve|frame)/|oracle/(reference|compare|report)/|harness/(comparison|grading|tradeoff)/|apps/|mutants/|properties/|fuzz/|bench/|tools/|tests/support/")
 set(problems "")
 foreach(source IN LISTS sources)
   file(STRINGS ${ROOT}/${source} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
