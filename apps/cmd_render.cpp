@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/backends.h"
 #include "apps/command.h"
 #include "apps/render_outputs.h"
 #include "apps/settings_flags.h"
@@ -28,6 +29,7 @@ struct RenderFlags {
     std::string depth_out;
     bool stats = false;
     int repeat = 1;  // frames rendered, each reusing the previous one's buffers; the last is written
+    std::string backend = "raster";
 };
 
 void register_render_flags(CLI::App& app, RenderFlags& flags) {
@@ -50,6 +52,10 @@ void register_render_flags(CLI::App& app, RenderFlags& flags) {
                        "Render the frame N times, each reusing the previous frame's buffers (1..10000, default 1); "
                        "--stats then adds ms_first and ms_median of the frames' ms_total")
         ->check(CLI::Range(1, 10000));
+    render->add_option("--backend", flags.backend,
+                       "What draws the frame: raster (the default) or gl, OpenGL 4.5 through Mesa's EGL with GLSL of "
+                       "our own (unlit, phong and blinn-phong, 1 or 4 samples, untextured and opaque: docs/gl.md)")
+        ->check(CLI::IsMember({"raster", "gl"}));
 }
 
 nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
@@ -100,8 +106,15 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     job.repeat = flags.repeat;
     RenderedFrame rendered;
     try {
-        run_render_job(scene, job, RasterRenderer{}, rendered);
+        const std::unique_ptr<Renderer> renderer = renderer_named(flags.backend);
+        run_render_job(scene, job, *renderer, rendered);
+    } catch (const InputError& error) {  // what the backend cannot draw
+        err << "raster render: error: " << flags.scene << ": " << error.what() << "\n";
+        return kExitBadInput;
     } catch (const OutputError& error) {
+        err << "raster render: error: " << error.what() << "\n";
+        return kExitIoError;
+    } catch (const std::runtime_error& error) {  // no OpenGL context
         err << "raster render: error: " << error.what() << "\n";
         return kExitIoError;
     }

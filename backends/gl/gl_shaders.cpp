@@ -1,0 +1,91 @@
+// The GL backend's GLSL (gl_shaders.h).
+#include "backends/gl/gl_shaders.h"
+
+namespace raster::gl {
+
+const char* vertex_shader_source() {
+    return R"GLSL(#version 450 core
+layout(location = 0) in vec3 position;  // world
+layout(location = 1) in vec3 normal;    // world, unit
+layout(location = 2) in vec3 colour;    // linear RGB
+uniform mat4 view_projection;
+out vec3 world_position;
+out vec3 world_normal;
+out vec3 base_colour;
+void main() {
+    world_position = position;
+    world_normal = normal;
+    base_colour = colour;
+    gl_Position = view_projection * vec4(position, 1.0);
+}
+)GLSL";
+}
+
+const char* fragment_shader_source() {
+    return R"GLSL(#version 450 core
+// mode: 0 unlit, 1 Phong, 2 Blinn-Phong. Lights: type 0 point, 1 directional, 2 spot; radiance = intensity * colour.
+const int MAX_LIGHTS = 8;
+uniform int mode;
+uniform vec3 ambient, diffuse, specular;  // the material's
+uniform float exponent;
+uniform vec3 ambient_light;
+uniform vec3 eye;
+uniform bool orthographic;
+uniform vec3 back_direction;  // orthographic: normalize(eye - target), the view vector everywhere
+uniform int light_count;
+uniform int light_type[MAX_LIGHTS];
+uniform vec3 light_position[MAX_LIGHTS];
+uniform vec3 light_direction[MAX_LIGHTS];  // unit, where the light travels
+uniform vec3 light_radiance[MAX_LIGHTS];
+uniform bool light_attenuate[MAX_LIGHTS];
+uniform vec2 light_spot[MAX_LIGHTS];  // the spot fade's scale and offset
+in vec3 world_position;
+in vec3 world_normal;
+in vec3 base_colour;
+layout(location = 0) out vec4 out_colour;
+void main() {
+    if (mode == 0) {
+        out_colour = vec4(base_colour, 1.0);
+        return;
+    }
+    vec3 n = normalize(world_normal);
+    vec3 to_eye = orthographic ? back_direction : normalize(eye - world_position);
+    vec3 lit = ambient * ambient_light;
+    vec3 highlights = vec3(0.0);
+    for (int i = 0; i < light_count; ++i) {
+        vec3 to_light;
+        float distance_squared = 1.0;
+        if (light_type[i] == 1) {
+            to_light = -light_direction[i];
+        } else {
+            vec3 d = light_position[i] - world_position;
+            distance_squared = dot(d, d);
+            if (!(distance_squared > 0.0)) continue;
+            to_light = d / sqrt(distance_squared);
+        }
+        float n_dot_l = dot(n, to_light);
+        if (!(n_dot_l > 0.0)) continue;
+        vec3 radiance = light_radiance[i];
+        if (light_type[i] == 2) {
+            float fade = clamp(dot(light_direction[i], -to_light) * light_spot[i].x + light_spot[i].y, 0.0, 1.0);
+            radiance *= fade * fade;
+        }
+        if (light_attenuate[i] && light_type[i] != 1) radiance /= distance_squared;
+        float lobe;
+        if (mode == 1) {
+            lobe = dot(2.0 * n_dot_l * n - to_light, to_eye);
+        } else {
+            vec3 h = to_light + to_eye;
+            float h_length = length(h);
+            lobe = h_length > 0.0 ? dot(n, h) / h_length : 0.0;
+        }
+        float highlight = exponent == 0.0 ? 1.0 : pow(max(lobe, 0.0), exponent);
+        lit += n_dot_l * diffuse * radiance;
+        highlights += highlight * specular * radiance;
+    }
+    out_colour = vec4(base_colour * lit + highlights, 1.0);
+}
+)GLSL";
+}
+
+}  // namespace raster::gl

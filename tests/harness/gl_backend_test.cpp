@@ -1,0 +1,57 @@
+// The GL backend (OpenGL on Mesa's EGL, llvmpipe here) judged by the grader: its images of the corpus scenes it
+// draws pass at 1 and 4 samples per pixel, the same frame twice gives the same bytes, and what it cannot draw is
+// refused by name.
+#include "backends/gl/gl_renderer.h"
+
+#include <gtest/gtest.h>
+
+#include "harness/grading/image_grade.h"
+#include "raster/compat/scene_loader.h"
+#include "raster/core/errors.h"
+
+namespace raster {
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(RASTER_SOURCE_DIR) / "corpus/scenes";
+
+Image gl_image(const Scene& scene) {
+    RenderResult result;
+    gl::GlRenderer().render_into(scene, RenderOptions{}, result);
+    return result.image;
+}
+
+TEST(GlBackend, itsImagesOfTheCorpusScenesItDrawsPassTheGrader) {
+    for (const char* name : {"teapot.yaml", "interpenetrating.yaml", "single_triangle.yaml", "scene_graph.yaml",
+                             "near_crossing.yaml", "squashed_teapot.yaml"})
+        for (const int samples : {1, 4}) {
+            Scene scene = load_scene(kScenes / name);
+            scene.settings.samples = samples;
+            const harness::ImageGrade grade = harness::grade_image(scene, gl_image(scene), harness::GradeOptions{});
+            EXPECT_TRUE(grade.pass()) << name << " at " << samples << ": " << harness::grade_json(grade).dump();
+        }
+}
+
+TEST(GlBackend, theSameFrameTwiceGivesTheSameBytes) {
+    Scene scene = load_scene(kScenes / "teapot.yaml");
+    scene.settings.samples = 4;
+    const Image first = gl_image(scene), second = gl_image(scene);
+    EXPECT_TRUE(first.pixels == second.pixels);
+}
+
+TEST(GlBackend, whatItCannotDrawIsRefusedByName) {
+    for (const auto& [name, what] : {std::pair{"flat_cube.yaml", "flat shading"}, {"textured_cube.yaml", "textures"},
+                                     {"sun_and_spot.yaml", "shadows"}}) {
+        try {
+            gl_image(load_scene(kScenes / name));
+            ADD_FAILURE() << name << " was drawn";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find(what), std::string::npos) << name << ": " << error.what();
+        }
+    }
+    Scene sixteen = load_scene(kScenes / "teapot.yaml");
+    sixteen.settings.samples = 16;
+    EXPECT_THROW(gl_image(sixteen), InputError);
+}
+
+}  // namespace
+}  // namespace raster

@@ -1,0 +1,18 @@
+# Fails when a file of the GL backend (backends/gl/) includes a header of raster's own frame stages (raster/geometry,
+# rasterize, shading, resolve, simd, texture): the backend must rasterize, interpolate and shade on its own.
+file(GLOB sources RELATIVE ${ROOT} ${ROOT}/backends/gl/*.h ${ROOT}/backends/gl/*.cpp)
+set(problems "")
+foreach(source IN LISTS sources)
+  file(STRINGS ${ROOT}/${source} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"raster/(geometry|rasterize|shading|resolve|simd|texture)/")
+  foreach(line IN LISTS includes)
+    string(APPEND problems "${source}: ${line}\n")
+  endforeach()
+endforeach()
+list(LENGTH sources count)
+if(count EQUAL 0)
+  message(FATAL_ERROR "check_gl_independence: no file under backends/gl")
+endif()
+if(problems)
+  message(FATAL_ERROR "the GL backend includes raster's own stages:\n${problems}")
+endif()
+message(STATUS "check_gl_independence: ${count} files of the GL backend include none of raster's stages")
