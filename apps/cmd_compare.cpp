@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/backends.h"
 #include "apps/command.h"
 #include "apps/render_outputs.h"
 #include "apps/settings_flags.h"
@@ -27,6 +28,7 @@ struct CompareFlags {
     std::string diff_out;
     std::string junit_out;
     bool fast_oracle = false;
+    std::string backend = "raster";
 };
 
 void register_compare_flags(CLI::App& app, CompareFlags& flags) {
@@ -56,6 +58,10 @@ void register_compare_flags(CLI::App& app, CompareFlags& flags) {
                         "Write a disagreement map: genuine samples red, genuine colour magenta, ambiguous yellow, "
                         "agreeing dimmed grey");
     add_fast_oracle_flag(*compare, flags.fast_oracle);
+    compare->add_option("--backend", flags.backend,
+                        "What renders the frame the oracle judges: raster (the default) or gl, OpenGL on Mesa's EGL, "
+                        "judged sample by sample like raster (docs/gl.md)")
+        ->check(CLI::IsMember({"raster", "gl"}));
 }
 
 int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err) {
@@ -83,11 +89,19 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
     options.depth_output = true;
     std::unique_ptr<harness::Comparison> comparison;
     try {
+        const std::unique_ptr<Renderer> renderer = renderer_named(flags.backend);
+        options.renderer = renderer.get();
         comparison = std::make_unique<harness::Comparison>(harness::compare_scene(scene, options));
+    } catch (const InputError& error) {  // what the backend cannot draw
+        err << "raster compare: error: " << flags.scene << ": " << error.what() << "\n";
+        return kExitBadInput;
     } catch (const OutputError& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;
     } catch (const oracle::OracleError& error) {
+        err << "raster compare: error: " << error.what() << "\n";
+        return kExitIoError;
+    } catch (const std::runtime_error& error) {  // no OpenGL context
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;
     }

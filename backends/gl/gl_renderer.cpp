@@ -16,6 +16,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "backends/gl/egl_context.h"
+#include "backends/gl/gl_objects.h"
 #include "backends/gl/gl_scene.h"
 #include "backends/gl/gl_shaders.h"
 #include "raster/core/errors.h"
@@ -23,39 +24,6 @@
 
 namespace raster::gl {
 namespace {
-
-GLuint compiled(GLenum kind, const char* source) {
-    const GLuint shader = glCreateShader(kind);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[2048];
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        throw std::runtime_error(std::string("the GL backend's shader does not compile: ") + log);
-    }
-    return shader;
-}
-
-GLuint linked_program() {
-    const GLuint program = glCreateProgram();
-    const GLuint vertex = compiled(GL_VERTEX_SHADER, vertex_shader_source());
-    const GLuint fragment = compiled(GL_FRAGMENT_SHADER, fragment_shader_source());
-    glAttachShader(program, vertex);
-    glAttachShader(program, fragment);
-    glLinkProgram(program);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048];
-        glGetProgramInfoLog(program, sizeof log, nullptr, log);
-        throw std::runtime_error(std::string("the GL backend's program does not link: ") + log);
-    }
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
-    return program;
-}
 
 // The view and a reversed-Z projection (depth 1 at near, 0 at far; with glClipControl's 0..1 depth range), upside down.
 glm::mat4 view_projection(const Camera& camera, int width, int height) {
@@ -109,32 +77,114 @@ void set_lighting_uniforms(GLuint program, const Scene& scene) {
     }
 }
 
-// A framebuffer with a float colour attachment and a float depth attachment at `samples` (1: not multisampled).
-struct Framebuffer {
-    GLuint framebuffer = 0, colour = 0, depth = 0;
-    Framebuffer(int width, int height, int samples, bool with_depth) {
-        const GLenum target = samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
-        glCreateFramebuffers(1, &framebuffer);
-        glCreateTextures(target, 1, &colour);
-        if (samples > 1) glTextureStorage2DMultisample(colour, samples, GL_RGBA32F, width, height, GL_TRUE);
-        else glTextureStorage2D(colour, 1, GL_RGBA32F, width, height);
-        glNamedFramebufferTexture(framebuffer, GL_COLOR_ATTACHMENT0, colour, 0);
-        if (with_depth) {
-            glCreateTextures(target, 1, &depth);
-            if (samples > 1) glTextureStorage2DMultisample(depth, samples, GL_DEPTH_COMPONENT32F, width, height, GL_TRUE);
-            else glTextureStorage2D(depth, 1, GL_DEPTH_COMPONENT32F, width, height);
-            glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, depth, 0);
+// The scene's corners in one vertex buffer, position, normal and colour at locations 0, 1 and 2.
+class VertexInput {
+public:
+    explicit VertexInput(const std::vector<GlCorner>& corners) {
+        glCreateVertexArrays(1, &array_);
+        glCreateBuffers(1, &buffer_);
+        glNamedBufferStorage(buffer_, static_cast<GLsizeiptr>(corners.size() * sizeof(GlCorner)),
+                             corners.empty() ? nullptr : corners.data(), 0);
+        glVertexArrayVertexBuffer(array_, 0, buffer_, 0, sizeof(GlCorner));
+        for (GLuint attribute = 0; attribute < 3; ++attribute) {
+            glEnableVertexArrayAttrib(array_, attribute);
+            glVertexArrayAttribFormat(array_, attribute, 3, GL_FLOAT, GL_FALSE,
+                                      static_cast<GLuint>(attribute * sizeof(glm::vec3)));
+            glVertexArrayAttribBinding(array_, attribute, 0);
         }
-        if (glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error("the GL backend's framebuffer is incomplete at " + std::to_string(samples) +
-                                     " samples");
     }
-    ~Framebuffer() {
-        glDeleteFramebuffers(1, &framebuffer);
-        glDeleteTextures(1, &colour);
-        if (depth) glDeleteTextures(1, &depth);
+    ~VertexInput() {
+        glDeleteBuffers(1, &buffer_);
+        glDeleteVertexArrays(1, &array_);
     }
+    VertexInput(const VertexInput&) = delete;
+    VertexInput& operator=(const VertexInput&) = delete;
+    GLuint array() const { return array_; }
+
+private:
+    GLuint array_ = 0, buffer_ = 0;
 };
+
+// The state both passes draw with: the framebuffer, reversed-Z depth, per-sample shading, culling.
+void begin_pass(const GlFramebuffer& framebuffer, const RenderSettings& settings, bool per_sample) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glViewport(0, 0, settings.width, settings.height);
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);  // reversed Z: larger is nearer; a tie keeps the triangle drawn first
+    if (per_sample) {  // every sample shaded at its own position
+        glEnable(GL_SAMPLE_SHADING);
+        glMinSampleShading(1.0f);
+    } else {
+        glDisable(GL_SAMPLE_SHADING);
+    }
+    if (settings.cull_backfaces) {
+        glEnable(GL_CULL_FACE);
+        glFrontFace(GL_CW);  // counter-clockwise in NDC, seen upside down
+        glCullFace(GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    const float far_depth = 0.0f;
+    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
+}
+
+// The visibility pass and its read back into `visibility` (raster's sample order, empty samples zeroed).
+void draw_visibility(const Scene& scene, const GlScene& drawn, const VertexInput& input, const glm::mat4& clip,
+                     VisibilityBuffer& visibility) {
+    const RenderSettings& settings = scene.settings;
+    const int width = settings.width, height = settings.height, samples = settings.samples;
+    const GlFramebuffer frame(width, height, samples, {GL_R32UI, GL_RGBA32F}, true);
+    begin_pass(frame, settings, true);
+    const GLuint empty = kNoTriangle;
+    glClearNamedFramebufferuiv(frame.id(), GL_COLOR, 0, &empty);
+    const glm::vec4 zero(0.0f);
+    glClearNamedFramebufferfv(frame.id(), GL_COLOR, 1, glm::value_ptr(zero));
+    const GlProgram program(visibility_vertex_shader_source(), visibility_fragment_shader_source(),
+                            visibility_geometry_shader_source());
+    glUseProgram(program.id());
+    glUniform2f(program.uniform("viewport"), static_cast<float>(width), static_cast<float>(height));
+    glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(clip));
+    glUniform3fv(program.uniform("eye"), 1, glm::value_ptr(scene.camera.eye));
+    const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
+    glUniform3fv(program.uniform("forward"), 1, glm::value_ptr(forward));
+    glBindVertexArray(input.array());
+    for (const GlDraw& draw : drawn.draws) {
+        glUniform1ui(program.uniform("first_triangle"), draw.first_corner / 3);
+        glDrawArrays(GL_TRIANGLES, static_cast<GLint>(draw.first_corner), static_cast<GLsizei>(draw.corners));
+    }
+
+    const size_t count = static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(samples);
+    GLuint buffers[2] = {0, 0};
+    glCreateBuffers(2, buffers);
+    glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(count * sizeof(uint32_t)), nullptr, 0);
+    glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(count * sizeof(glm::vec4)), nullptr, 0);
+    const GlProgram readback(visibility_readback_source(samples > 1).c_str());
+    glUseProgram(readback.id());
+    glUniform1i(readback.uniform("width"), width);
+    glUniform1i(readback.uniform("samples"), samples);
+    glUniform1i(readback.uniform("count"), static_cast<GLint>(count));
+    glBindTextureUnit(0, frame.colour(0));
+    glBindTextureUnit(1, frame.colour(1));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
+    const size_t groups = (count + 63) / 64, columns = std::min<size_t>(groups, 65535);
+    glDispatchCompute(static_cast<GLuint>(columns), static_cast<GLuint>((groups + columns - 1) / columns), 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<uint32_t> ids(count);
+    std::vector<glm::vec4> data(count);
+    glGetNamedBufferSubData(buffers[0], 0, static_cast<GLsizeiptr>(count * sizeof(uint32_t)), ids.data());
+    glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(count * sizeof(glm::vec4)), data.data());
+    glDeleteBuffers(2, buffers);
+
+    visibility.resize(width, height, samples);
+    for (size_t i = 0; i < count; ++i) {
+        visibility.triangle[i] = ids[i];
+        const bool covered = ids[i] != kNoTriangle;
+        visibility.bary[i] = covered ? glm::vec3(data[i]) : glm::vec3(0.0f);
+        visibility.view_depth[i] = covered ? data[i].w : 0.0f;
+    }
+}
 
 }  // namespace
 
@@ -151,67 +201,37 @@ void GlRenderer::render_into(const Scene& scene, const RenderOptions& options, R
                          std::to_string(context.max_samples()) + " at most), not " + std::to_string(settings.samples));
     const int width = settings.width, height = settings.height, samples = settings.samples;
     const GlScene drawn = gl_scene(scene);
-
-    const GLuint program = linked_program();
-    GLuint vertex_array = 0, buffer = 0;
-    glCreateVertexArrays(1, &vertex_array);
-    glCreateBuffers(1, &buffer);
-    glNamedBufferStorage(buffer, static_cast<GLsizeiptr>(drawn.corners.size() * sizeof(GlCorner)),
-                         drawn.corners.empty() ? nullptr : drawn.corners.data(), 0);
-    glVertexArrayVertexBuffer(vertex_array, 0, buffer, 0, sizeof(GlCorner));
-    for (GLuint attribute = 0; attribute < 3; ++attribute) {
-        glEnableVertexArrayAttrib(vertex_array, attribute);
-        glVertexArrayAttribFormat(vertex_array, attribute, 3, GL_FLOAT, GL_FALSE,
-                                  static_cast<GLuint>(attribute * sizeof(glm::vec3)));
-        glVertexArrayAttribBinding(vertex_array, attribute, 0);
-    }
-
-    const Framebuffer frame(width, height, samples, true);
-    glBindFramebuffer(GL_FRAMEBUFFER, frame.framebuffer);
-    glViewport(0, 0, width, height);
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);  // reversed Z: larger is nearer; a tie keeps the triangle drawn first
-    if (samples > 1 && !settings.msaa) {  // supersampling: every sample shaded at its own position
-        glEnable(GL_SAMPLE_SHADING);
-        glMinSampleShading(1.0f);
-    }
-    if (settings.cull_backfaces) {
-        glEnable(GL_CULL_FACE);
-        glFrontFace(GL_CW);  // counter-clockwise in NDC, seen upside down
-        glCullFace(GL_BACK);
-    }
-    const glm::vec4 background(settings.background, 1.0f);
-    glClearNamedFramebufferfv(frame.framebuffer, GL_COLOR, 0, glm::value_ptr(background));
-    const float far_depth = 0.0f;
-    glClearNamedFramebufferfv(frame.framebuffer, GL_DEPTH, 0, &far_depth);
-
-    glUseProgram(program);
+    const VertexInput input(drawn.corners);
     const glm::mat4 clip = view_projection(scene.camera, width, height);
-    glUniformMatrix4fv(glGetUniformLocation(program, "view_projection"), 1, GL_FALSE, glm::value_ptr(clip));
-    set_lighting_uniforms(program, scene);
-    glBindVertexArray(vertex_array);
+
+    const GlFramebuffer frame(width, height, samples, {GL_RGBA32F}, true);
+    begin_pass(frame, settings, samples > 1 && !settings.msaa);  // supersampling shades every sample
+    const glm::vec4 background(settings.background, 1.0f);
+    glClearNamedFramebufferfv(frame.id(), GL_COLOR, 0, glm::value_ptr(background));
+    const GlProgram program(vertex_shader_source(), fragment_shader_source());
+    glUseProgram(program.id());
+    glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(clip));
+    set_lighting_uniforms(program.id(), scene);
+    glBindVertexArray(input.array());
     for (const GlDraw& draw : drawn.draws) {
         const Material& m = *draw.material;
-        glUniform3fv(glGetUniformLocation(program, "ambient"), 1, glm::value_ptr(m.ambient));
-        glUniform3fv(glGetUniformLocation(program, "diffuse"), 1, glm::value_ptr(m.diffuse));
-        glUniform3fv(glGetUniformLocation(program, "specular"), 1, glm::value_ptr(m.specular));
-        glUniform1f(glGetUniformLocation(program, "exponent"), m.exponent);
+        glUniform3fv(program.uniform("ambient"), 1, glm::value_ptr(m.ambient));
+        glUniform3fv(program.uniform("diffuse"), 1, glm::value_ptr(m.diffuse));
+        glUniform3fv(program.uniform("specular"), 1, glm::value_ptr(m.specular));
+        glUniform1f(program.uniform("exponent"), m.exponent);
         glDrawArrays(GL_TRIANGLES, static_cast<GLint>(draw.first_corner), static_cast<GLsizei>(draw.corners));
     }
 
     // The resolve: the samples averaged by a blit into a one-sample float framebuffer, read back from row 0, the top.
-    const Framebuffer resolved(width, height, 1, false);
-    glBlitNamedFramebuffer(frame.framebuffer, resolved.framebuffer, 0, 0, width, height, 0, 0, width, height,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    const GlFramebuffer resolved(width, height, 1, {GL_RGBA32F}, false);
+    glBlitNamedFramebuffer(frame.id(), resolved.id(), 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
     std::vector<float> pixels(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
-    glGetTextureImage(resolved.colour, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)),
+    glGetTextureImage(resolved.colour(0), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(pixels.size() * sizeof(float)),
                       pixels.data());
+    if (options.keep_visibility) draw_visibility(scene, drawn, input, clip, result.visibility);
     if (const GLenum error = glGetError(); error != GL_NO_ERROR)
-        throw std::runtime_error("the GL backend: OpenGL error 0x" + std::to_string(error));
-    glDeleteBuffers(1, &buffer);
-    glDeleteVertexArrays(1, &vertex_array);
-    glDeleteProgram(program);
+        throw std::runtime_error("the GL backend: OpenGL error " + std::to_string(error));
 
     result.image = Image(width, height, 3);
     for (int y = 0; y < height; ++y)

@@ -1,6 +1,8 @@
 // The GL backend's GLSL (gl_shaders.h).
 #include "backends/gl/gl_shaders.h"
 
+#include <string>
+
 namespace raster::gl {
 
 const char* vertex_shader_source() {
@@ -86,6 +88,88 @@ void main() {
     out_colour = vec4(base_colour * lit + highlights, 1.0);
 }
 )GLSL";
+}
+
+const char* visibility_vertex_shader_source() {
+    return R"GLSL(#version 450 core
+layout(location = 0) in vec3 position;  // world
+uniform mat4 view_projection;
+uniform vec3 eye;
+uniform vec3 forward;  // the unit view direction: view depth is the distance along it
+out float corner_depth;
+void main() {
+    corner_depth = dot(position - eye, forward);
+    gl_Position = view_projection * vec4(position, 1.0);
+}
+)GLSL";
+}
+
+const char* visibility_geometry_shader_source() {
+    return R"GLSL(#version 450 core
+// Hands every fragment the whole original triangle, before clipping: its corners' clip x, y and w, and their view
+// depths. (llvmpipe divides a sample's perspective-correct inputs by the pixel centre's 1/w, docs/gl.md: the
+// fragment shader solves for the barycentrics itself.)
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 3) out;
+in float corner_depth[];
+flat out mat3 corners;
+flat out vec3 depths;
+void main() {
+    mat3 m = mat3(gl_in[0].gl_Position.xyw, gl_in[1].gl_Position.xyw, gl_in[2].gl_Position.xyw);
+    for (int k = 0; k < 3; ++k) {
+        corners = m;
+        depths = vec3(corner_depth[0], corner_depth[1], corner_depth[2]);
+        gl_PrimitiveID = gl_PrimitiveIDIn;
+        gl_Position = gl_in[k].gl_Position;
+        EmitVertex();
+    }
+    EndPrimitive();
+}
+)GLSL";
+}
+
+const char* visibility_fragment_shader_source() {
+    return R"GLSL(#version 450 core
+uniform uint first_triangle;  // the draw's first scene triangle
+uniform vec2 viewport;        // width, height in pixels
+flat in mat3 corners;         // the original triangle's clip x, y, w, a column per corner
+flat in vec3 depths;          // its corners' view depths
+layout(location = 0) out uint triangle_id;
+layout(location = 1) out vec4 sample_data;
+void main() {
+    // The sample's NDC (gl_FragCoord.xy is the sample's position under sample shading); the weights a with
+    // corners * a proportional to (x, y, 1) are the homogeneous barycentrics, normalised to sum to 1.
+    vec2 ndc = 2.0 * gl_FragCoord.xy / viewport - 1.0 + 0.0 * float(gl_SampleID);
+    vec3 a = inverse(corners) * vec3(ndc, 1.0);
+    vec3 bary = a / (a.x + a.y + a.z);
+    triangle_id = first_triangle + uint(gl_PrimitiveID);
+    sample_data = vec4(bary, dot(bary, depths));
+}
+)GLSL";
+}
+
+std::string visibility_readback_source(bool multisampled) {
+    std::string source = R"GLSL(#version 450 core
+layout(local_size_x = 64) in;
+uniform int width;
+uniform int samples;
+uniform int count;
+layout(binding = 0) uniform usampler2D@MS@ ids;
+layout(binding = 1) uniform sampler2D@MS@ data;
+layout(std430, binding = 0) writeonly buffer Ids { uint out_ids[]; };
+layout(std430, binding = 1) writeonly buffer Data { vec4 out_data[]; };
+void main() {
+    int i = int(gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 64u + gl_GlobalInvocationID.x);
+    if (i >= count) return;
+    int pixel = i / samples, s = i % samples;
+    ivec2 xy = ivec2(pixel % width, pixel / width);
+    out_ids[i] = texelFetch(ids, xy, s).r;  // one sample: s is 0, the level
+    out_data[i] = texelFetch(data, xy, s);
+}
+)GLSL";
+    for (size_t at = source.find("@MS@"); at != std::string::npos; at = source.find("@MS@"))
+        source.replace(at, 4, multisampled ? "MS" : "");
+    return source;
 }
 
 }  // namespace raster::gl
