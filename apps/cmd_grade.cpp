@@ -65,6 +65,9 @@ int run_grade(const GradeFlags& flags, std::ostream& out, std::ostream& err) {
     Image image;
     try {
         file = load_scene_with_flags(flags.scene, flags.settings);
+        if (file.request.self_check)
+            throw InputError(flags.scene, 0, 0,
+                             "this file asks for a check of its own, not an image: there is nothing to grade");
         if (std::string problem = harness::comparison_problem(scene); !problem.empty())
             throw InputError(flags.scene, 0, 0, problem);
         image = harness::read_image_file(flags.image, 3);
@@ -84,7 +87,7 @@ int run_grade(const GradeFlags& flags, std::ostream& out, std::ostream& err) {
     std::unique_ptr<harness::ImageGrade> grade;
     try {
         grade = std::make_unique<harness::ImageGrade>(harness::grade_image(scene, image, options));
-    } catch (const oracle::OracleError& error) {
+    } catch (const std::exception& error) {  // Embree failing, or memory
         err << "raster grade: error: " << error.what() << "\n";
         return kExitIoError;
     }

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/backends.h"
 #include "apps/command.h"
 #include "apps/settings_flags.h"
 #include "apps/progress_bar.h"
@@ -43,6 +44,7 @@ struct ReportFlags {
     int threads = 0;
     std::string tradeoff_dir;
     std::string junit_out;
+    std::vector<std::string> backends = {"raster"};
 };
 
 void register_report_flags(CLI::App& app, ReportFlags& flags) {
@@ -58,6 +60,11 @@ void register_report_flags(CLI::App& app, ReportFlags& flags) {
     report->add_option("-o,--output", flags.output_dir, "Directory to write the report into")->required();
     report->add_option("--samples", flags.samples, "Samples per pixel for every scene (default: each scene's own)");
     add_fast_oracle_flag(*report, flags.fast_oracle);
+    report->add_option("--backend", flags.backends,
+                       "What renders each scene, one row and page per backend: raster (the default), gl, or both "
+                       "(--backend raster,gl); a scene a backend cannot draw is skipped for it, saying why")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"raster", "gl"}));
     report->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (results are the same for any count)")
         ->check(CLI::Range(0, 256));
     report->add_option("--junit", flags.junit_out,
@@ -178,47 +185,68 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     harness::ComparisonOptions options;
     options.mode = flags.fast_oracle ? oracle::OracleMode::fast : oracle::OracleMode::robust;
     options.threads = flags.threads;
-    
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    try {
+        for (const std::string& backend : flags.backends) renderers.push_back(renderer_named(backend));
+    } catch (const InputError& error) {
+        err << "raster report: error: " << error.what() << "\n";
+        return kExitBadInput;
+    }
     std::vector<oracle::ReportRow> rows;
     std::vector<harness::JunitCase> junit_cases;
     const std::string started = harness::junit_timestamp_now();
     std::set<std::string> taken = {"index"};  // a scene named index gets index-2.html, not the index's name
+    size_t skipped = 0;  // scenes a backend cannot draw
     ProgressBar progress(err, scenes.size());
     try {
-        for (size_t i = 0; i < scenes.size(); ++i) {
-            const Scene& scene = scenes[i].scene;
-            // What `raster render` writes for the file: its colour image unless it asks for the depth image.
-            options.colour_output = image_kind_for(scenes[i].request) == OutputKind::colour;
-            options.evidence_pixels = kEvidenceSamples / size_t(std::max(scene.settings.samples, 1));
-            oracle::ReportRow row;
-            row.name = fs::path(scene.path).stem().string();
-            progress.show(i, row.name);
-            const auto comparison = std::make_unique<harness::Comparison>(harness::compare_scene(scene, options));
-            const std::string stem = oracle::unique_file_stem(row.name, taken);
-            row.raster_image = stem + ".raster.png";
-            row.oracle_image = stem + ".oracle.png";
-            row.diff_image = stem + ".diff.png";
-            row.page = stem + ".html";
-            row.evidence = stem + ".evidence.js";
-            write_image(dir / row.raster_image, comparison->raster.image, flags.threads);
-            write_image(dir / row.oracle_image, comparison->oracle_image, flags.threads);
-            write_image(dir / row.diff_image, harness::diff_map(*comparison), flags.threads);
-            row.comparison = harness::comparison_json(*comparison);
-            write_file_atomically(dir / row.evidence,
-                                  "window.rasterEvidence = " + comparison->evidence.dump() + ";\n");
-            write_file_atomically(dir / row.page, oracle::scene_page_html(row));
-            junit_cases.push_back(harness::junit_case(*comparison, scene.path));
-            char line[256];
-            std::snprintf(line, sizeof line,
-                          "%s: genuine %llu, ambiguous %llu, colour genuine %llu, raster %.0f ms, oracle %.0f ms\n",
-                          row.name.c_str(), static_cast<unsigned long long>(comparison->genuine_total()),
-                          static_cast<unsigned long long>(comparison->visibility.counts.ambiguous_total()),
-                          static_cast<unsigned long long>(comparison->colour.genuine_pixels), comparison->raster_ms,
-                          comparison->oracle_ms);
-            progress.finish();
-            out << line << std::flush;
-            rows.push_back(std::move(row));
-        }
+        for (size_t i = 0; i < scenes.size(); ++i)
+            for (size_t b = 0; b < renderers.size(); ++b) {
+                const Scene& scene = scenes[i].scene;
+                // What `raster render` writes for the file: its colour image unless it asks for the depth image.
+                options.colour_output = image_kind_for(scenes[i].request) == OutputKind::colour;
+                options.evidence_pixels = kEvidenceSamples / size_t(std::max(scene.settings.samples, 1));
+                options.renderer = renderers[b].get();
+                const std::string backend = flags.backends[b];
+                oracle::ReportRow row;
+                const std::string stem_name = fs::path(scene.path).stem().string();
+                row.name = backend == "raster" ? stem_name : stem_name + " (" + backend + ")";
+                progress.show(i, row.name);
+                std::unique_ptr<harness::Comparison> comparison;
+                try {
+                    comparison = std::make_unique<harness::Comparison>(harness::compare_scene(scene, options));
+                } catch (const InputError& error) {  // what this backend cannot draw: the other rows go on
+                    progress.finish();
+                    out << row.name << ": skipped: " << error.what() << "\n" << std::flush;
+                    ++skipped;
+                    continue;
+                }
+                const std::string stem =
+                    oracle::unique_file_stem(backend == "raster" ? stem_name : stem_name + "-" + backend, taken);
+                row.raster_image = stem + ".raster.png";
+                row.oracle_image = stem + ".oracle.png";
+                row.diff_image = stem + ".diff.png";
+                row.page = stem + ".html";
+                row.evidence = stem + ".evidence.js";
+                write_image(dir / row.raster_image, comparison->raster.image, flags.threads);
+                write_image(dir / row.oracle_image, comparison->oracle_image, flags.threads);
+                write_image(dir / row.diff_image, harness::diff_map(*comparison), flags.threads);
+                row.comparison = harness::comparison_json(*comparison);
+                write_file_atomically(dir / row.evidence,
+                                      "window.rasterEvidence = " + comparison->evidence.dump() + ";\n");
+                write_file_atomically(dir / row.page, oracle::scene_page_html(row));
+                junit_cases.push_back(
+                    harness::junit_case(*comparison, backend == "raster" ? scene.path : scene.path + " (" + backend + ")"));
+                char line[256];
+                std::snprintf(line, sizeof line,
+                              "%s: genuine %llu, ambiguous %llu, colour genuine %llu, raster %.0f ms, oracle %.0f ms\n",
+                              row.name.c_str(), static_cast<unsigned long long>(comparison->genuine_total()),
+                              static_cast<unsigned long long>(comparison->visibility.counts.ambiguous_total()),
+                              static_cast<unsigned long long>(comparison->colour.genuine_pixels), comparison->raster_ms,
+                              comparison->oracle_ms);
+                progress.finish();
+                out << line << std::flush;
+                rows.push_back(std::move(row));
+            }
         progress.show(scenes.size(), "done");
         progress.finish();
         std::optional<oracle::TradeoffLink> link;
@@ -241,7 +269,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     size_t with_genuine = 0;
     for (const auto& row : rows) with_genuine += row.comparison["genuine_total"].get<uint64_t>() > 0;
     out << "report: " << (dir / "index.html").string() << " (" << rows.size() << " scenes, " << with_genuine
-        << " with genuine disagreements)\n";
+        << " with genuine disagreements" << (skipped ? ", " + std::to_string(skipped) + " skipped" : std::string()) << ")\n";
     return with_genuine == 0 ? kExitOk : kExitCheckFailed;
 }
 

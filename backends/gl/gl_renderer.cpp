@@ -83,7 +83,8 @@ public:
     explicit VertexInput(const std::vector<GlCorner>& corners) {
         glCreateVertexArrays(1, &array_);
         glCreateBuffers(1, &buffer_);
-        glNamedBufferStorage(buffer_, static_cast<GLsizeiptr>(corners.size() * sizeof(GlCorner)),
+        // At least one corner's bytes: GL refuses an empty store, and a scene may have no triangle.
+        glNamedBufferStorage(buffer_, static_cast<GLsizeiptr>(std::max<size_t>(corners.size(), 1) * sizeof(GlCorner)),
                              corners.empty() ? nullptr : corners.data(), 0);
         glVertexArrayVertexBuffer(array_, 0, buffer_, 0, sizeof(GlCorner));
         for (GLuint attribute = 0; attribute < 3; ++attribute) {
@@ -196,16 +197,16 @@ void GlRenderer::render_into(const Scene& scene, const RenderOptions& options, R
     const Clock::time_point start = Clock::now();
     const EglContext context;
     name_ = "gl (" + context.description() + ")";
-    if (settings.samples != 1 && settings.samples != 4)
-        throw InputError("the GL backend draws 1 or 4 samples per pixel (" + context.description() + " has " +
-                         std::to_string(context.max_samples()) + " at most), not " + std::to_string(settings.samples));
+    if (settings.samples > context.max_samples())
+        throw InputError("the GL backend draws " + std::to_string(settings.samples) + " samples per pixel, but " +
+                         context.description() + " has " + std::to_string(context.max_samples()) + " at most");
     const int width = settings.width, height = settings.height, samples = settings.samples;
     const GlScene drawn = gl_scene(scene);
     const VertexInput input(drawn.corners);
     const glm::mat4 clip = view_projection(scene.camera, width, height);
 
     const GlFramebuffer frame(width, height, samples, {GL_RGBA32F}, true);
-    begin_pass(frame, settings, samples > 1 && !settings.msaa);  // supersampling shades every sample
+    begin_pass(frame, settings, samples > 1);  // supersampling shades every sample
     const glm::vec4 background(settings.background, 1.0f);
     glClearNamedFramebufferfv(frame.id(), GL_COLOR, 0, glm::value_ptr(background));
     const GlProgram program(vertex_shader_source(), fragment_shader_source());

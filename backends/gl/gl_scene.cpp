@@ -1,6 +1,8 @@
 // The scene as the GL backend draws it (gl_scene.h).
 #include "backends/gl/gl_scene.h"
 
+#include <cstdint>
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -35,7 +37,19 @@ std::string unsupported_by_gl(const Scene& scene) {
     if (blended) add("transparency");
     if (has_shadows(scene) && mode != ShadingMode::unlit) add("shadows");
     if (scene.lights.size() > kMaxLights) add("more than " + std::to_string(kMaxLights) + " lights");
-    if (scene.settings.pattern != SamplePattern::standard) add("the grid sample pattern");
+    const RenderSettings& settings = scene.settings;
+    if (settings.pattern != SamplePattern::standard) add("the grid sample pattern");
+    if (settings.samples != 1 && settings.samples != 4) add(std::to_string(settings.samples) + " samples (it draws 1 or 4)");
+    if (settings.msaa) add("MSAA (raster shades at a pixel's first covered sample, GL at its centre)");
+    if (settings.snap_bits != 8) add(std::to_string(settings.snap_bits) + " sub-pixel bits (llvmpipe snaps to 8)");
+    const PrecisionModes exact;
+    const PrecisionModes& modes = settings.modes;
+    if (modes.edges != exact.edges || modes.interpolation != exact.interpolation || modes.depth != exact.depth ||
+        modes.clipping != exact.clipping)
+        add("the precision modes (--edges, --interpolation, --depth-format, --clipping)");
+    // Its read backs hold 16 bytes a sample in one GL call, whose size is a 32-bit int.
+    const uint64_t samples = uint64_t(settings.width) * uint64_t(settings.height) * uint64_t(settings.samples);
+    if (samples * 16 > uint64_t(INT32_MAX)) add("frames over " + std::to_string(INT32_MAX / 16) + " samples");
     return what;
 }
 

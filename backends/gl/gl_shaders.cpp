@@ -11,6 +11,7 @@ layout(location = 0) in vec3 position;  // world
 layout(location = 1) in vec3 normal;    // world, unit
 layout(location = 2) in vec3 colour;    // linear RGB
 uniform mat4 view_projection;
+invariant gl_Position;  // both passes place every corner alike, so their depth tests pick the same triangles
 out vec3 world_position;
 out vec3 world_normal;
 out vec3 base_colour;
@@ -96,6 +97,7 @@ layout(location = 0) in vec3 position;  // world
 uniform mat4 view_projection;
 uniform vec3 eye;
 uniform vec3 forward;  // the unit view direction: view depth is the distance along it
+invariant gl_Position;
 out float corner_depth;
 void main() {
     corner_depth = dot(position - eye, forward);
@@ -137,9 +139,9 @@ flat in vec3 depths;          // its corners' view depths
 layout(location = 0) out uint triangle_id;
 layout(location = 1) out vec4 sample_data;
 void main() {
-    // The sample's NDC (gl_FragCoord.xy is the sample's position under sample shading); the weights a with
+    // The sample's NDC (its pixel's corner plus its position in the pixel); the weights a with
     // corners * a proportional to (x, y, 1) are the homogeneous barycentrics, normalised to sum to 1.
-    vec2 ndc = 2.0 * gl_FragCoord.xy / viewport - 1.0 + 0.0 * float(gl_SampleID);
+    vec2 ndc = 2.0 * (floor(gl_FragCoord.xy) + gl_SamplePosition) / viewport - 1.0;
     vec3 a = inverse(corners) * vec3(ndc, 1.0);
     vec3 bary = a / (a.x + a.y + a.z);
     triangle_id = first_triangle + uint(gl_PrimitiveID);

@@ -95,11 +95,11 @@ JudgedFiles render_raster(const Scene& scene, const ComparisonOptions& options, 
     }
     const RasterRenderer raster_renderer;
     const Renderer& renderer = options.renderer ? *options.renderer : raster_renderer;
-    out.renderer = renderer.name();
     if (!renderer.gives_visibility())
         throw std::invalid_argument(renderer.name() + " gives no per-sample visibility, which a comparison classes");
     RenderedFrame rendered;
     run_render_job(scene, job, renderer, rendered);
+    out.renderer = renderer.name();  // after the frame: the GL backend names the implementation it drew on
     out.raster = std::move(rendered.result);
     out.raster_ms = out.raster.stats.ms_total;
     out.write_ms = rendered.ms_write;

@@ -3,6 +3,10 @@
 // per-sample 1/w, the same frame twice gives the same bytes, and what it cannot draw is refused by name.
 #include "backends/gl/gl_renderer.h"
 
+#include <functional>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "harness/comparison/comparison_output.h"
@@ -10,6 +14,9 @@
 #include "harness/grading/image_grade.h"
 #include "raster/compat/scene_loader.h"
 #include "raster/core/errors.h"
+#include "raster/frame/render.h"
+#include "tests/support/cli_run.h"
+#include "tests/support/temp_dir.h"
 
 namespace raster {
 namespace {
@@ -74,9 +81,50 @@ TEST(GlBackend, whatItCannotDrawIsRefusedByName) {
             EXPECT_NE(std::string(error.what()).find(what), std::string::npos) << name << ": " << error.what();
         }
     }
-    Scene sixteen = load_scene(kScenes / "teapot.yaml");
-    sixteen.settings.samples = 16;
-    EXPECT_THROW(gl_image(sixteen), InputError);
+    // Settings GL would not honour, refused rather than drawn otherwise than asked.
+    Scene teapot = load_scene(kScenes / "teapot.yaml");
+    for (const auto& [change, what] : std::vector<std::pair<std::function<void(Scene&)>, const char*>>{
+             {[](Scene& s) { s.settings.samples = 16; }, "16 samples"},
+             {[](Scene& s) { s.settings.samples = 4, s.settings.msaa = true; }, "MSAA"},
+             {[](Scene& s) { s.settings.snap_bits = 4; }, "4 sub-pixel bits"},
+             {[](Scene& s) { s.settings.modes.interpolation = Interpolation::affine; }, "the precision modes"}}) {
+        Scene scene = teapot;
+        change(scene);
+        try {
+            gl_image(scene);
+            ADD_FAILURE() << what << " was drawn";
+        } catch (const InputError& error) {
+            EXPECT_NE(std::string(error.what()).find(what), std::string::npos) << error.what();
+        }
+    }
+}
+
+// The command line: compare --backend gl judges llvmpipe; report --backend raster,gl writes a row and a page per
+// backend, and skips, saying why, a scene the backend cannot draw.
+TEST(GlBackend, compareAndReportRunItByName) {
+    const test_support::CliRun compared =
+        test_support::run_raster({"compare", (kScenes / "teapot.yaml").string(), "--backend", "gl", "--samples", "4"});
+    EXPECT_EQ(compared.code, 0) << compared.out << compared.err;
+    EXPECT_NE(compared.out.find("(gl (llvmpipe"), std::string::npos) << compared.out;
+    const test_support::TempDir dir;
+    const test_support::CliRun reported = test_support::run_raster(
+        {"report", (kScenes / "teapot.yaml").string(), (kScenes / "flat_cube.yaml").string(), "--backend", "raster,gl",
+         "-o", dir.path().string()});
+    EXPECT_EQ(reported.code, 0) << reported.out << reported.err;
+    EXPECT_NE(reported.out.find("flat_cube (gl): skipped: the GL backend does not draw flat shading"), std::string::npos)
+        << reported.out;
+    EXPECT_NE(reported.out.find("(3 scenes, 0 with genuine disagreements, 1 skipped)"), std::string::npos) << reported.out;
+    EXPECT_TRUE(std::filesystem::exists(dir / "teapot.html"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "teapot-gl.html"));
+    EXPECT_NE(test_support::read_file(dir / "index.html").find("teapot (gl)"), std::string::npos);
+}
+
+TEST(GlBackend, aSceneWithoutTrianglesDrawsTheBackground) {
+    Scene empty = load_scene(kScenes / "single_triangle.yaml");
+    empty.meshes.clear();
+    const Image image = gl_image(empty);
+    const Image expected = render(empty, RenderOptions{}).image;
+    EXPECT_TRUE(image.pixels == expected.pixels);
 }
 
 }  // namespace
