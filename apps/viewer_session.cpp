@@ -179,11 +179,8 @@ ViewerCheck ViewerSession::check(const ViewRequest& request) {
     ViewerCheck result{{}, std::string(map.begin(), map.end())};
     const uint64_t index = checks_done_++;
     nlohmann::json legend = nlohmann::json::array();
-    for (const oracle::DiffMapKey& key : oracle::diff_map_legend()) {
-        char colour[8];
-        std::snprintf(colour, sizeof colour, "#%02x%02x%02x", key.rgb[0], key.rgb[1], key.rgb[2]);
-        legend.push_back({{"colour", colour}, {"meaning", key.meaning}});
-    }
+    for (const oracle::DiffMapKey& key : oracle::diff_map_legend())
+        legend.push_back({{"colour", oracle::css_colour(key)}, {"meaning", key.meaning}});
     nlohmann::json record = {{"index", index},
                              {"verdict", comparison.genuine_total() == 0 ? "pass" : "fail"},
                              {"genuine_total", comparison.genuine_total()},

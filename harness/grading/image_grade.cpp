@@ -2,6 +2,7 @@
 #include "harness/grading/image_grade.h"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "harness/comparison/oracle_run.h"
@@ -21,12 +22,10 @@ void widen(oracle::PixelBounds& bounds, int levels) {
     }
 }
 
-// Whether the pixel's bytes are the background's, within `levels`.
-bool is_background(const uint8_t* bytes, const Scene& scene, int levels) {
-    for (int k = 0; k < 3; ++k) {
-        const oracle::ByteRange range = oracle::byte_range(oracle::Interval(scene.settings.background[k]));
-        if (bytes[k] + levels < range.lo || bytes[k] > range.hi + levels) return false;
-    }
+// Whether the pixel's bytes are the background's (`background`, per channel), within `levels`.
+bool is_background(const uint8_t* bytes, const std::array<oracle::ByteRange, 3>& background, int levels) {
+    for (int k = 0; k < 3; ++k)
+        if (bytes[k] + levels < background[k].lo || bytes[k] > background[k].hi + levels) return false;
     return true;
 }
 
@@ -82,6 +81,8 @@ ImageGrade grade_image(const Scene& scene, const Image& image, const GradeOption
         oracle::check_colours(bounds, {image.width, image.height, image.channels, image.pixels.data()}, run.image);
     grade.widest_interval = check.widths.widest;
 
+    std::array<oracle::ByteRange, 3> background;
+    for (int k = 0; k < 3; ++k) background[k] = oracle::byte_range(oracle::Interval(settings.background[k]));
     const size_t pixels = size_t(grade.width) * size_t(grade.height), samples = size_t(grade.samples);
     grade.pixels.assign(pixels, PixelGrade::pass);
     for (size_t pixel = 0; pixel < pixels; ++pixel) {
@@ -95,7 +96,7 @@ ImageGrade grade_image(const Scene& scene, const Image& image, const GradeOption
             }
             const uint8_t* bytes = &image.pixels[pixel * 3];
             g = empty ? PixelGrade::unexpected
-                : covered && is_background(bytes, scene, options.colour_levels) ? PixelGrade::missing
+                : covered && is_background(bytes, background, options.colour_levels) ? PixelGrade::missing
                                                                                 : PixelGrade::wrong_colour;
         } else if (bounds.state[pixel] != oracle::PixelState::judged) {
             g = PixelGrade::open;

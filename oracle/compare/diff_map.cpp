@@ -4,6 +4,7 @@
 #include "oracle/reference/shadow_oracle.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace raster::oracle {
 
@@ -20,6 +21,12 @@ const std::vector<DiffMapKey>& diff_map_legend() {
         {{90, 90, 90}, "agreeing (raster's image, dimmed to grey)"},
     };
     return legend;
+}
+
+std::string css_colour(const DiffMapKey& key) {
+    char colour[8];
+    std::snprintf(colour, sizeof colour, "#%02x%02x%02x", key.rgb[0], key.rgb[1], key.rgb[2]);
+    return colour;
 }
 
 OracleImage diff_map(const std::vector<SampleClass>& classes, int samples, const std::vector<uint8_t>& colour_genuine,

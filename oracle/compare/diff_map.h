@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "oracle/compare/raster_output.h"
@@ -27,6 +28,8 @@ struct DiffMapKey {
 };
 // Every colour the map paints; the agreeing grey as it shows a light surface (luma 200).
 const std::vector<DiffMapKey>& diff_map_legend();
+// The key's colour as a page writes it: "#e61414".
+std::string css_colour(const DiffMapKey& key);
 
 // The shadow and transparency layers of the map, per pixel, each optional (null or empty: none): genuine colour
 // disagreements a shadow test explains, the shadow verdicts met (ShadowTally bits; an open verdict paints the

@@ -104,18 +104,31 @@ bool on_clip_boundary(const ReferenceGeometry& reference, uint32_t id, const glm
     return (low <= reference.near() && reference.near() <= high) || (low <= reference.far() && reference.far() <= high);
 }
 
+ReversedZInterval reversed_z_interval(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen) {
+    const SquareRange range = reference.range_around(id, screen, reference.polygon(id).radius);
+    if (!range.bounded) return {};
+    // The triangle's reversed-Z error, and Embree's own at this sample (the oracle's choice rests on its t).
+    const double error = reference.polygon(id).reversed_z_error + reference.embree_reversed_z_error(id, screen);
+    return {true, range.min_reversed_z - error, range.max_reversed_z + error};
+}
+
 bool depth_tie(const ReferenceGeometry& reference, uint32_t a, uint32_t b, const glm::dvec2& screen) {
     for (uint32_t id : {a, b}) {
         const ReferencePolygon& p = reference.polygon(id);
         if (p.culled || !reference.contains(id, screen)) return false;  // then one of them should not be there
     }
-    const SquareRange ra = reference.range_around(a, screen, reference.polygon(a).radius);
-    const SquareRange rb = reference.range_around(b, screen, reference.polygon(b).radius);
-    if (!ra.bounded || !rb.bounded) return true;
-    // Each triangle's reversed-Z error, and Embree's own at this sample (its choice rests on its t).
-    const double ea = reference.polygon(a).reversed_z_error + reference.embree_reversed_z_error(a, screen);
-    const double eb = reference.polygon(b).reversed_z_error + reference.embree_reversed_z_error(b, screen);
-    return ra.min_reversed_z - ea <= rb.max_reversed_z + eb && rb.min_reversed_z - eb <= ra.max_reversed_z + ea;
+    const ReversedZInterval ia = reversed_z_interval(reference, a, screen), ib = reversed_z_interval(reference, b, screen);
+    if (!ia.bounded || !ib.bounded) return true;
+    return ia.lo <= ib.hi && ib.lo <= ia.hi;
+}
+
+RoundingAllowance rounding_allowance(const ReferenceGeometry& reference, uint32_t id, const SampleEntry& raster,
+                                     const SampleEntry& oracle) {
+    const ReferencePolygon& polygon = reference.polygon(id);
+    return {2.0 * barycentric_rounding(polygon.relative_depth_error),
+            2.0 * view_depth_rounding(polygon.relative_depth_error) *
+                    std::min(double(raster.view_depth), double(oracle.view_depth)) +
+                orthographic_depth_error(reference, polygon)};
 }
 
 SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2& screen, const SampleEntry& raster,
@@ -127,12 +140,8 @@ SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2
         const glm::dvec3 bary_gap = glm::abs(glm::dvec3(raster.bary) - glm::dvec3(oracle.bary));
         const double depth_gap = std::fabs(double(raster.view_depth) - double(oracle.view_depth));
         // The rounding alone is a lower bound of the tolerance: most samples are settled without the spread.
-        const ReferencePolygon& polygon = reference.polygon(id);
-        const double bary_rounding = 2.0 * barycentric_rounding(polygon.relative_depth_error);
-        const double depth_rounding = 2.0 * view_depth_rounding(polygon.relative_depth_error) *
-                                          std::min(double(raster.view_depth), double(oracle.view_depth)) +
-                                      orthographic_depth_error(reference, polygon);
-        if (std::max({bary_gap.x, bary_gap.y, bary_gap.z}) <= bary_rounding && depth_gap <= depth_rounding)
+        const RoundingAllowance rounding = rounding_allowance(reference, id, raster, oracle);
+        if (std::max({bary_gap.x, bary_gap.y, bary_gap.z}) <= rounding.bary && depth_gap <= rounding.view_depth)
             return SampleClass::agree;
         const AgreementTolerance tolerance = agreement_tolerance(reference, id, screen);
         if (bary_gap.x > tolerance.bary.x || bary_gap.y > tolerance.bary.y || bary_gap.z > tolerance.bary.z ||

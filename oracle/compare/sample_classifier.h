@@ -59,6 +59,23 @@ bool in_edge_band(const ReferenceGeometry& reference, uint32_t id, const glm::dv
 bool on_clip_boundary(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);
 bool depth_tie(const ReferenceGeometry& reference, uint32_t a, uint32_t b, const glm::dvec2& screen);
 
+// The reversed-z values triangle `id` may take over the sample's square (its exact extremes over the square of its
+// radius, widened by its reversed-z error and Embree's at the sample); unbounded where the ray grazes its plane
+// there. Larger is nearer. Two triangles tie where their intervals overlap.
+struct ReversedZInterval {
+    bool bounded = false;
+    double lo = 0, hi = 0;
+};
+ReversedZInterval reversed_z_interval(const ReferenceGeometry& reference, uint32_t id, const glm::dvec2& screen);
+
+// What both renderers' float rounding alone allows a sample that both show on triangle `id`: a barycentric gap and a
+// view depth gap. Most samples are settled by it, before the agreement tolerance's spread is measured.
+struct RoundingAllowance {
+    double bary = 0, view_depth = 0;
+};
+RoundingAllowance rounding_allowance(const ReferenceGeometry& reference, uint32_t id, const SampleEntry& raster,
+                                     const SampleEntry& oracle);
+
 // Classes one sample at screen position `screen` from visibility alone (everything but colour).
 SampleClass classify_sample(const ReferenceGeometry& reference, const glm::dvec2& screen, const SampleEntry& raster,
                             const SampleEntry& oracle);

@@ -8,7 +8,6 @@
 
 #include <glm/common.hpp>
 
-#include "oracle/reference/precision.h"
 
 namespace raster::oracle {
 namespace {
@@ -35,14 +34,10 @@ SampleExcuse same_triangle(const ReferenceGeometry& reference, const glm::dvec2&
     const glm::dvec3 bary_gap = glm::abs(glm::dvec3(raster.bary) - glm::dvec3(oracle.bary));
     const double worst_bary = std::max({bary_gap.x, bary_gap.y, bary_gap.z});
     const double depth_gap = std::fabs(double(raster.view_depth) - double(oracle.view_depth));
-    const ReferencePolygon& polygon = reference.polygon(id);
-    const double bary_rounding = 2.0 * barycentric_rounding(polygon.relative_depth_error);
-    const double depth_rounding =
-        2.0 * view_depth_rounding(polygon.relative_depth_error) * std::min(double(raster.view_depth), double(oracle.view_depth)) +
-        (reference.orthographic() ? polygon.depth_error : 0.0);
-    if (klass == SampleClass::agree && worst_bary <= bary_rounding && depth_gap <= depth_rounding)
+    const RoundingAllowance rounding = rounding_allowance(reference, id, raster, oracle);
+    if (klass == SampleClass::agree && worst_bary <= rounding.bary && depth_gap <= rounding.view_depth)
         return figure("barycentric gap on " + triangle_name(id) + " within both renderers' rounding", worst_bary,
-                      bary_rounding);
+                      rounding.bary);
     const AgreementTolerance tolerance = agreement_tolerance(reference, id, screen);
     // The component furthest past (or nearest to) its tolerance.
     int worst = 0;
@@ -89,16 +84,11 @@ SampleExcuse clip_boundary(const ReferenceGeometry& reference, const glm::dvec2&
 }
 
 SampleExcuse depth_tie(const ReferenceGeometry& reference, const glm::dvec2& screen, uint32_t a, uint32_t b) {
-    const SquareRange ra = reference.range_around(a, screen, reference.polygon(a).radius);
-    const SquareRange rb = reference.range_around(b, screen, reference.polygon(b).radius);
+    const ReversedZInterval ia = reversed_z_interval(reference, a, screen), ib = reversed_z_interval(reference, b, screen);
     const std::string rule = "reversed-z gap of " + triangle_name(a) + " and " + triangle_name(b);
-    if (!ra.bounded || !rb.bounded) return yes_or_no(rule + ": a plane is grazed within the sample's square");
-    const double ea = reference.polygon(a).reversed_z_error + reference.embree_reversed_z_error(a, screen);
-    const double eb = reference.polygon(b).reversed_z_error + reference.embree_reversed_z_error(b, screen);
+    if (!ia.bounded || !ib.bounded) return yes_or_no(rule + ": a plane is grazed within the sample's square");
     // Two intervals overlap when their middles are no further apart than their half-widths together.
-    const double middle_a = (ra.min_reversed_z + ra.max_reversed_z) / 2, half_a = (ra.max_reversed_z - ra.min_reversed_z) / 2 + ea;
-    const double middle_b = (rb.min_reversed_z + rb.max_reversed_z) / 2, half_b = (rb.max_reversed_z - rb.min_reversed_z) / 2 + eb;
-    return figure(rule, std::fabs(middle_a - middle_b), half_a + half_b);
+    return figure(rule, std::fabs((ia.lo + ia.hi) / 2 - (ib.lo + ib.hi) / 2), (ia.hi - ia.lo) / 2 + (ib.hi - ib.lo) / 2);
 }
 
 // No allowance held: the nearest edge of the triangles involved, beyond its band.

@@ -71,12 +71,9 @@ private:
 // Whether triangle `t` is certainly behind triangle `front` all over the sample's square: t's nearest reversed z
 // (larger is nearer) below front's farthest, each widened by its errors.
 bool certainly_behind(const ReferenceGeometry& reference, uint32_t t, uint32_t front, const glm::dvec2& screen) {
-    const SquareRange rt = reference.range_around(t, screen, reference.polygon(t).radius);
-    const SquareRange rf = reference.range_around(front, screen, reference.polygon(front).radius);
-    if (!rt.bounded || !rf.bounded) return false;
-    const double et = reference.polygon(t).reversed_z_error + reference.embree_reversed_z_error(t, screen);
-    const double ef = reference.polygon(front).reversed_z_error + reference.embree_reversed_z_error(front, screen);
-    return rt.max_reversed_z + et < rf.min_reversed_z - ef;
+    const ReversedZInterval it = reversed_z_interval(reference, t, screen);
+    const ReversedZInterval ifront = reversed_z_interval(reference, front, screen);
+    return it.bounded && ifront.bounded && it.hi < ifront.lo;
 }
 
 // The openness of one sample: the first allowance found, in the classifier's order (facing, clip boundary, edge

@@ -1,8 +1,6 @@
 // A scene's page in the report (scene_page.h).
 #include "oracle/report/scene_page.h"
 
-#include <cstdio>
-
 #include <initializer_list>
 
 #include "oracle/compare/diff_map.h"
@@ -106,10 +104,9 @@ std::string view_image(const std::string& file, const std::string& alt, const nl
 std::string legend() {
     std::string html = "<p class=\"legend\">Disagreement map:";
     for (const oracle::DiffMapKey& key : oracle::diff_map_legend()) {
-        char colour[8];
-        std::snprintf(colour, sizeof colour, "#%02x%02x%02x", key.rgb[0], key.rgb[1], key.rgb[2]);
-        html += std::string("<span class=\"swatch\" data-colour=\"") + colour + "\" style=\"background:" + colour +
-                "\"></span>" + key.meaning;
+        const std::string colour = oracle::css_colour(key);
+        html += "<span class=\"swatch\" data-colour=\"" + colour + "\" style=\"background:" + colour + "\"></span>" +
+                key.meaning;
     }
     return html + "</p>\n";
 }
