@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/backends.h"
+#include "backends/plugin/plugin_library.h"
 #include "apps/command.h"
 #include "apps/render_outputs.h"
 #include "apps/settings_flags.h"
@@ -59,9 +60,10 @@ void register_compare_flags(CLI::App& app, CompareFlags& flags) {
                         "agreeing dimmed grey");
     add_fast_oracle_flag(*compare, flags.fast_oracle);
     compare->add_option("--backend", flags.backend,
-                        "What renders the frame the oracle judges: raster (the default) or gl, OpenGL on Mesa's EGL, "
-                        "judged sample by sample like raster (docs/gl.md)")
-        ->check(CLI::IsMember({"raster", "gl"}));
+                        "What renders the frame the oracle judges, sample by sample: raster (the default); gl, "
+                        "OpenGL on Mesa's EGL (docs/gl.md); or plugin:PATH, your own rasterizer as a shared library "
+                        "(docs/plugins.md)")
+        ->check(backend_name_validator());
 }
 
 int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err) {
@@ -98,6 +100,9 @@ int run_compare(const CompareFlags& flags, std::ostream& out, std::ostream& err)
     } catch (const OutputError& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;
+    } catch (const plugin::PluginError& error) {  // the rasterizer under test failed: a finding
+        err << "raster compare: " << flags.scene << ": " << error.what() << "\n";
+        return kExitCheckFailed;
     } catch (const oracle::OracleError& error) {
         err << "raster compare: error: " << error.what() << "\n";
         return kExitIoError;

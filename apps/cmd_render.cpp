@@ -53,9 +53,10 @@ void register_render_flags(CLI::App& app, RenderFlags& flags) {
                        "--stats then adds ms_first and ms_median of the frames' ms_total")
         ->check(CLI::Range(1, 10000));
     render->add_option("--backend", flags.backend,
-                       "What draws the frame: raster (the default) or gl, OpenGL 4.5 through Mesa's EGL with GLSL of "
-                       "our own (unlit, phong and blinn-phong, 1 or 4 samples, untextured and opaque: docs/gl.md)")
-        ->check(CLI::IsMember({"raster", "gl"}));
+                       "What draws the frame: raster (the default); gl, OpenGL 4.5 through Mesa's EGL with GLSL of "
+                       "our own (unlit, phong and blinn-phong, 1 or 4 samples, untextured and opaque: docs/gl.md); or "
+                       "plugin:PATH, your own rasterizer as a shared library (docs/plugins.md)")
+        ->check(backend_name_validator());
 }
 
 nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {

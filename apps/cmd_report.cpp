@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/backends.h"
+#include "backends/plugin/plugin_library.h"
 #include "apps/command.h"
 #include "apps/settings_flags.h"
 #include "apps/progress_bar.h"
@@ -61,10 +62,11 @@ void register_report_flags(CLI::App& app, ReportFlags& flags) {
     report->add_option("--samples", flags.samples, "Samples per pixel for every scene (default: each scene's own)");
     add_fast_oracle_flag(*report, flags.fast_oracle);
     report->add_option("--backend", flags.backends,
-                       "What renders each scene, one row and page per backend: raster (the default), gl, or both "
-                       "(--backend raster,gl); a scene a backend cannot draw is skipped for it, saying why")
+                       "What renders each scene, one row and page per backend: raster (the default), gl, "
+                       "plugin:PATH, or several (--backend raster,gl); a scene a backend cannot draw is skipped for "
+                       "it, saying why")
         ->delimiter(',')
-        ->check(CLI::IsMember({"raster", "gl"}));
+        ->check(backend_name_validator());
     report->add_option("--threads", flags.threads, "Worker threads, 0 = all cores (results are the same for any count)")
         ->check(CLI::Range(0, 256));
     report->add_option("--junit", flags.junit_out,
@@ -197,6 +199,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     const std::string started = harness::junit_timestamp_now();
     std::set<std::string> taken = {"index"};  // a scene named index gets index-2.html, not the index's name
     size_t skipped = 0;  // scenes a backend cannot draw
+    size_t failed = 0;   // scenes a plugin failed on
     ProgressBar progress(err, scenes.size());
     try {
         for (size_t i = 0; i < scenes.size(); ++i)
@@ -206,7 +209,7 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
                 options.colour_output = image_kind_for(scenes[i].request) == OutputKind::colour;
                 options.evidence_pixels = kEvidenceSamples / size_t(std::max(scene.settings.samples, 1));
                 options.renderer = renderers[b].get();
-                const std::string backend = flags.backends[b];
+                const std::string backend = backend_label(flags.backends[b]);
                 oracle::ReportRow row;
                 const std::string stem_name = fs::path(scene.path).stem().string();
                 row.name = backend == "raster" ? stem_name : stem_name + " (" + backend + ")";
@@ -218,6 +221,11 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
                     progress.finish();
                     out << row.name << ": skipped: " << error.what() << "\n" << std::flush;
                     ++skipped;
+                    continue;
+                } catch (const plugin::PluginError& error) {  // the plugin failed on this scene: it fails the report
+                    progress.finish();
+                    out << row.name << ": failed: " << error.what() << "\n" << std::flush;
+                    ++failed;
                     continue;
                 }
                 const std::string stem =
@@ -269,8 +277,9 @@ int run_report(const ReportFlags& flags, std::ostream& out, std::ostream& err) {
     size_t with_genuine = 0;
     for (const auto& row : rows) with_genuine += row.comparison["genuine_total"].get<uint64_t>() > 0;
     out << "report: " << (dir / "index.html").string() << " (" << rows.size() << " scenes, " << with_genuine
-        << " with genuine disagreements" << (skipped ? ", " + std::to_string(skipped) + " skipped" : std::string()) << ")\n";
-    return with_genuine == 0 ? kExitOk : kExitCheckFailed;
+        << " with genuine disagreements" << (skipped ? ", " + std::to_string(skipped) + " skipped" : std::string())
+        << (failed ? ", " + std::to_string(failed) + " on which the plugin failed" : std::string()) << ")\n";
+    return with_genuine == 0 && failed == 0 ? kExitOk : kExitCheckFailed;
 }
 
 }  // namespace

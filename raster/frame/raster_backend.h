@@ -11,13 +11,17 @@
 
 namespace raster {
 
-class PixelResolver;  // resolve.h
+class PixelResolver;     // resolve.h
+struct TransformedScene;  // vertex_stage.h
 
 // What the frame asks of the opaque draw.
 struct OpaqueDraw {
     const FrameParams& frame;
     const PixelResolver& resolver;  // shades and resolves a pixel from its samples
     bool keep_visibility;           // every sample into result.visibility (else the backend may leave it empty)
+    // The vertex stage's clip-space triangles, for a backend that runs a front end of its own (a plugin's) in
+    // place of the setups; raster's backends draw the setups.
+    const TransformedScene* geometry = nullptr;
 };
 
 // What the opaque draw reports for the frame's statistics.

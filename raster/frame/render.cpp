@@ -68,7 +68,7 @@ void render_frame(const Scene& scene, const RenderOptions& options, const Raster
     const PixelResolver resolver(shader, resolve, frame.samples());
     const bool transparent = !front_end.transparent_setups.empty();
     const OpaqueDrawStats drawn =
-        backend.draw_opaque({frame, resolver, options.keep_visibility || transparent}, result);
+        backend.draw_opaque({frame, resolver, options.keep_visibility || transparent, &geometry}, result);
     stats.ms_setup += drawn.ms_bin;
     stats.ms_raster = drawn.ms_raster;
     stats.ms_shade = drawn.ms_shade;

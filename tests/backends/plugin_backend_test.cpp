@@ -1,0 +1,233 @@
+// The plugin backend (backends/plugin): raster's own stages behind the C interface give raster's bytes, so the host
+// hands over the frame and takes back the samples faithfully; every breach of the interface's contract is named;
+// solved barycentrics project back to the sample; libraries load or are refused by path; and the framework finds
+// the example naive plugin's bugs (docs/plugins.md) while passing what it draws right.
+#include "backends/plugin/plugin_renderer.h"
+
+#include <dlfcn.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "backends/plugin/plugin_samples.h"
+#include "harness/comparison/comparison_output.h"
+#include "harness/comparison/scene_comparison.h"
+#include "raster/compat/scene_loader.h"
+#include "raster/core/errors.h"
+#include "raster/frame/render.h"
+#include "raster/geometry/front_end.h"
+#include "raster/rasterize/reference_rasterizer.h"
+#include "tests/support/temp_dir.h"
+
+namespace raster {
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(RASTER_SOURCE_DIR) / "corpus/scenes";
+
+uint32_t current_abi() { return RASTER_PLUGIN_ABI_VERSION; }
+const char* test_name() { return "test plugin"; }
+
+// raster's own clip, setup and reference rasterizer behind the C interface, reading nothing but the frame it is
+// handed: what a correct plugin answers.
+int raster_stages_draw(const raster_plugin_frame* in, raster_plugin_samples* out) {
+    std::vector<glm::vec2> offsets(static_cast<size_t>(in->samples));
+    std::memcpy(offsets.data(), in->sample_offsets, offsets.size() * sizeof(glm::vec2));
+    FrameParams params = frame_params(in->width, in->height, in->subpixel_bits, offsets);
+    params.clip = ClipVolume{in->near_plane, in->far_plane, 1.0, in->orthographic != 0};
+    TransformedScene geometry;
+    for (uint32_t t = 0; t < in->triangle_count; ++t) {
+        for (int k = 0; k < 3; ++k) {
+            const float* v = in->clip_positions + 12 * t + 4 * k;
+            geometry.clip.emplace_back(v[0], v[1], v[2], v[3]);
+        }
+        geometry.triangles.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
+    }
+    VisibilityBuffer visibility;
+    rasterize_reference(set_up_triangles(geometry, params, in->cull_backfaces != 0), params, visibility);
+    for (size_t i = 0; i < visibility.size(); ++i) {
+        out->triangle[i] = visibility.triangle[i];
+        std::memcpy(out->barycentrics + 3 * i, &visibility.bary[i], sizeof(glm::vec3));
+    }
+    out->barycentrics_written = 1;
+    return RASTER_PLUGIN_DRAWN;
+}
+
+std::shared_ptr<const plugin::PluginLibrary> in_process(int (*draw)(const raster_plugin_frame*, raster_plugin_samples*),
+                                                       uint32_t (*abi)() = current_abi) {
+    return std::make_shared<plugin::PluginLibrary>(plugin::PluginFunctions{abi, test_name, draw}, "in-process");
+}
+
+RenderResult render_with(const Renderer& renderer, const Scene& scene) {
+    RenderResult result;
+    renderer.render_into(scene, RenderOptions{}, result);
+    return result;
+}
+
+// Every corpus scene raster draws with its default modes, as it is and with back faces culled (opaque or
+// transparent, lit, shadowed, textured, orthographic, at its own sample count): the same ids, barycentrics and
+// image bytes through the plugin interface as from raster itself. The view depths the host derives from the barycentrics agree to float rounding.
+TEST(PluginBackend, rastersOwnStagesBehindTheInterfaceGiveRastersBytes) {
+    const plugin::PluginRenderer renderer(in_process(raster_stages_draw));
+    for (const auto& entry : std::filesystem::directory_iterator(kScenes))
+        for (const bool cull : {false, true}) {
+        Scene scene = load_scene(entry.path());
+        scene.settings.cull_backfaces = scene.settings.cull_backfaces || cull;
+        const RenderResult direct = render(scene, RenderOptions{});
+        const RenderResult through = render_with(renderer, scene);
+        const std::string name = entry.path().filename().string() + (cull ? " culled" : "");
+        ASSERT_EQ(through.visibility.triangle, direct.visibility.triangle) << name;
+        EXPECT_TRUE(std::memcmp(through.visibility.bary.data(), direct.visibility.bary.data(),
+                                direct.visibility.bary.size() * sizeof(glm::vec3)) == 0)
+            << name;
+        EXPECT_EQ(through.image.pixels, direct.image.pixels) << name;
+        for (size_t i = 0; i < direct.visibility.size(); ++i)
+            if (direct.visibility.triangle[i] != kNoTriangle)
+                ASSERT_NEAR(through.visibility.view_depth[i], direct.visibility.view_depth[i],
+                            1e-5 * direct.visibility.view_depth[i])
+                    << name << " sample " << i;
+        }
+}
+
+// A frame of one triangle covering the middle of a 4 x 4 image at one sample per pixel.
+plugin::ClipSpaceFrame one_triangle_frame() {
+    plugin::ClipSpaceFrame frame;
+    frame.width = frame.height = 4;
+    frame.sample_offsets = {glm::vec2(0.5f)};
+    frame.triangles.push_back({glm::vec4(-1, -1, 0.5f, 1), glm::vec4(1, -1, 0.5f, 1), glm::vec4(0, 1, 0.5f, 1)});
+    return frame;
+}
+
+std::string message_of_draw(const std::shared_ptr<const plugin::PluginLibrary>& library) {
+    VisibilityBuffer out;
+    try {
+        library->draw(one_triangle_frame(), out);
+    } catch (const std::exception& error) {
+        return error.what();
+    }
+    return "(drew)";
+}
+
+TEST(PluginBackend, everyBreachOfTheContractIsNamedWithTheSample) {
+    // A triangle the frame does not have.
+    const auto past_the_end = [](const raster_plugin_frame*, raster_plugin_samples* out) {
+        out->triangle[6] = 7;
+        return RASTER_PLUGIN_DRAWN;
+    };
+    EXPECT_THROW(in_process(past_the_end)->draw(one_triangle_frame(), *std::make_unique<VisibilityBuffer>()),
+                 plugin::PluginError);
+    EXPECT_EQ(message_of_draw(in_process(past_the_end)),
+              "plugin test plugin wrote triangle 7 at sample 0 of pixel (2, 1), but the frame has 1 triangles");
+    // Barycentrics claimed but left unwritten at a covered sample.
+    const auto claimed = [](const raster_plugin_frame*, raster_plugin_samples* out) {
+        out->triangle[5] = 0;
+        out->barycentrics_written = 1;
+        return RASTER_PLUGIN_DRAWN;
+    };
+    EXPECT_NE(message_of_draw(in_process(claimed)).find("at sample 0 of pixel (1, 1): they must be finite"),
+              std::string::npos)
+        << message_of_draw(in_process(claimed));
+    // A refusal is the plugin's limit (InputError, exit 2); a failure is a finding (PluginError).
+    const auto refusing = [](const raster_plugin_frame*, raster_plugin_samples* out) {
+        std::strcpy(out->message, "only 1 sample per pixel");
+        return RASTER_PLUGIN_REFUSED;
+    };
+    VisibilityBuffer out;
+    EXPECT_THROW(in_process(refusing)->draw(one_triangle_frame(), out), InputError);
+    EXPECT_EQ(message_of_draw(in_process(refusing)), "plugin test plugin does not draw this frame: only 1 sample per pixel");
+    const auto failing = [](const raster_plugin_frame*, raster_plugin_samples* out) {
+        std::memset(out->message, 'x', RASTER_PLUGIN_MESSAGE_SIZE);  // unterminated: raster ends it in the buffer
+        return 42;
+    };
+    EXPECT_THROW(in_process(failing)->draw(one_triangle_frame(), out), plugin::PluginError);
+    EXPECT_EQ(message_of_draw(in_process(failing)),
+              "plugin test plugin failed (raster_plugin_draw returned 42): " +
+                  std::string(RASTER_PLUGIN_MESSAGE_SIZE - 1, 'x'));
+    // Another version of the interface is refused before any frame.
+    const auto other_abi = []() -> uint32_t { return RASTER_PLUGIN_ABI_VERSION + 1; };
+    try {
+        in_process(past_the_end, other_abi);
+        ADD_FAILURE() << "a plugin of another interface version was accepted";
+    } catch (const InputError& error) {
+        EXPECT_NE(std::string(error.what()).find("built against version 2 of raster_plugin.h"), std::string::npos)
+            << error.what();
+    }
+}
+
+// Ids only: the host solves each covered sample's barycentrics from the clip-space vertices, and they project back
+// to the sample: for random triangles with random w and random weights, the point sum l_i v_i projects to a
+// screen position whose solve gives l back.
+TEST(PluginBackend, solvedBarycentricsProjectBackToTheSample) {
+    std::mt19937 random(2026);
+    std::uniform_real_distribution<double> coordinate(-2.0, 2.0), w(0.01, 50.0), weight(0.0, 1.0);
+    for (int i = 0; i < 10000; ++i) {
+        std::array<glm::vec4, 3> triangle;
+        for (glm::vec4& v : triangle) {
+            const double vw = w(random);
+            v = glm::vec4(coordinate(random) * vw, coordinate(random) * vw, 0.5 * vw, vw);
+        }
+        glm::dvec3 l(weight(random), weight(random), weight(random));
+        l /= l.x + l.y + l.z;
+        glm::dvec4 p(0.0);
+        for (int k = 0; k < 3; ++k) p += l[k] * glm::dvec4(triangle[static_cast<size_t>(k)]);
+        const int width = 640, height = 480;
+        const glm::dvec2 screen((p.x / p.w + 1.0) * 0.5 * width, (1.0 - p.y / p.w) * 0.5 * height);
+        const glm::dvec3 solved = plugin::solve_barycentrics(triangle, screen, width, height);
+        const double area = std::abs(glm::determinant(glm::dmat3(glm::dvec3(triangle[0].x, triangle[0].y, triangle[0].w),
+                                                                 glm::dvec3(triangle[1].x, triangle[1].y, triangle[1].w),
+                                                                 glm::dvec3(triangle[2].x, triangle[2].y, triangle[2].w))));
+        if (area < 1e-3) continue;  // nearly edge-on: the weights are ill-conditioned
+        for (int k = 0; k < 3; ++k) ASSERT_NEAR(solved[k], l[k], 1e-6) << "case " << i;
+    }
+}
+
+TEST(PluginBackend, librariesLoadOrAreRefusedByPath) {
+    const auto naive = plugin::PluginLibrary::open(RASTER_NAIVE_PLUGIN);
+    EXPECT_EQ(naive->name(), "naive rasterizer (float edges, no fill rule)");
+    const auto refused = [](const std::string& path) {
+        try {
+            plugin::PluginLibrary::open(path);
+        } catch (const InputError& error) {
+            return std::string(error.what());
+        }
+        return std::string("(loaded)");
+    };
+    EXPECT_NE(refused("/no/such/plugin.so").find("no plugin library at this path"), std::string::npos);
+    test_support::TempDir dir;
+    std::ofstream(dir / "text.so") << "not a library\n";
+    EXPECT_NE(refused((dir / "text.so").string()).find("cannot load this plugin"), std::string::npos);
+    // A real shared library without the interface's functions: the C library's mathematics.
+    Dl_info math{};
+    ASSERT_NE(dladdr(reinterpret_cast<void*>(static_cast<double (*)(double)>(&::cos)), &math), 0);
+    EXPECT_NE(refused(math.dli_fname).find("has no function raster_plugin_abi_version"), std::string::npos)
+        << refused(math.dli_fname);
+}
+
+// What the framework finds in the example naive rasterizer (docs/plugins.md): its affine barycentrics are genuine
+// barycentric disagreements on every perspective scene, its dropped near-plane triangles genuine visibility ones;
+// a screen-parallel triangle, where neither bug shows, agrees everywhere.
+TEST(PluginBackend, theOracleFindsTheNaivePluginsBugsAndPassesWhatItDrawsRight) {
+    const plugin::PluginRenderer renderer(plugin::PluginLibrary::open(RASTER_NAIVE_PLUGIN));
+    harness::ComparisonOptions options;
+    options.renderer = &renderer;
+    const auto compare = [&](const char* name) {
+        return harness::compare_scene(load_scene(kScenes / name), options);
+    };
+    const harness::Comparison teapot = compare("teapot.yaml");
+    EXPECT_GT(teapot.visibility.counts.count(oracle::SampleClass::barycentrics), 10000u);
+    EXPECT_EQ(teapot.visibility.counts.count(oracle::SampleClass::visibility), 0u)
+        << harness::genuine_details(teapot);
+    const harness::Comparison near = compare("near_crossing.yaml");
+    EXPECT_GT(near.visibility.counts.count(oracle::SampleClass::visibility), 10000u);
+    const harness::Comparison flat = compare("single_triangle.yaml");
+    EXPECT_EQ(flat.genuine_total(), 0u) << harness::genuine_details(flat);
+    EXPECT_GT(flat.visibility.counts.count(oracle::SampleClass::agree), 0u);
+}
+
+}  // namespace
+}  // namespace raster
