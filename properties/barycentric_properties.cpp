@@ -47,7 +47,7 @@ std::string show(const glm::dvec3& b) {
 
 // |b0 + b1 + b2 - 1| <= u (|b0| + |b1| + |b2|) (1 + 2u) + 2^-50: in double the normalised weights sum to 1 within a
 // few double ulps; storing each as a float moves it by at most u |b_i|.
-RASTER_DRAWING_PROPERTY(Barycentrics, sumToOneWithinTheDerivedBound) {
+RASTER_RENDERER_PROPERTY(Barycentrics, sumToOneWithinTheDerivedBound) {
     for_each_covered_sample(impl, *perspective_triangles_inside(), [](const Sample& s, const glm::dvec3& b, double) {
         const double magnitude = std::fabs(b.x) + std::fabs(b.y) + std::fabs(b.z);
         const double bound = std::ldexp(magnitude, -24) * (1.0 + std::ldexp(1.0, -23)) + std::ldexp(1.0, -50);
@@ -60,7 +60,7 @@ RASTER_DRAWING_PROPERTY(Barycentrics, sumToOneWithinTheDerivedBound) {
 
 // b_i >= 0 exactly (bound 0): a covered sample has every E_i >= 0, the weights are products and sums of
 // non-negative numbers, and rounding never turns a non-negative number negative.
-RASTER_DRAWING_PROPERTY(Barycentrics, areNonNegativeOnCoveredSamples) {
+RASTER_RENDERER_PROPERTY(Barycentrics, areNonNegativeOnCoveredSamples) {
     for_each_covered_sample(impl, *perspective_triangles_inside(), [](const Sample& s, const glm::dvec3& b, double) {
         if (!(b.x >= 0.0 && b.y >= 0.0 && b.z >= 0.0))
             fail_case("barycentrics " + show(b) + " at covered " + describe(s) + " are negative");
@@ -71,7 +71,7 @@ RASTER_DRAWING_PROPERTY(Barycentrics, areNonNegativeOnCoveredSamples) {
 // the sample in each coordinate: the exact weights reproduce the sample from the snapped vertices, and the
 // original vertices are at most half a snap unit away from those (a convex combination keeps that), while the
 // relative errors e_i move the projection by at most 2 max|e_i| times the triangle's diameter in pixels.
-RASTER_DRAWING_PROPERTY(Barycentrics, reproduceTheSampleScreenPosition) {
+RASTER_RENDERER_PROPERTY(Barycentrics, reproduceTheSampleScreenPosition) {
     const ClipCase c = *perspective_triangles_inside();
     glm::dvec2 screen[3];
     double diameter = 0.0;
@@ -93,7 +93,7 @@ RASTER_DRAWING_PROPERTY(Barycentrics, reproduceTheSampleScreenPosition) {
 // then sum b_i V_i is the point R where the sample's ray meets that triangle's plane, within
 // 2^-22 (max_i |V_i - R| + |R|) + 2^-40 (max_i |V_i| + |R|) (the errors e_i, then the reference's double solve),
 // and the reported view depth is R's within 2^-22 relative (1/w rounded to float, the reciprocal stored as float).
-RASTER_DRAWING_PROPERTY(Barycentrics, perspectiveCorrectOnesReproduceTheRayPlaneIntersection) {
+RASTER_RENDERER_PROPERTY(Barycentrics, perspectiveCorrectOnesReproduceTheRayPlaneIntersection) {
     const ClipCase c = *perspective_triangles_inside();
     // The snapped triangle lifted back to (x, y, w) space (a linear image of view space: x and y scaled by the
     // lens, w = -z), each vertex at its original view depth.

@@ -8,18 +8,18 @@
 namespace raster::properties {
 
 // Two triangles sharing an edge built to run through samples (horizontal, vertical, diagonal, any slope).
-RASTER_DRAWING_PROPERTY(Coverage, sharedEdgeSamplesCoveredExactlyOnce) {
+RASTER_RENDERER_PROPERTY(Coverage, sharedEdgeSamplesCoveredExactlyOnce) {
     check_tiling(impl, *pairs_sharing_an_edge_through_samples());
 }
 
 // A fan of three to nine triangles around a vertex placed exactly on a sample.
-RASTER_DRAWING_PROPERTY(Coverage, sharedVertexOnASampleCoveredExactlyOnce) {
+RASTER_RENDERER_PROPERTY(Coverage, sharedVertexOnASampleCoveredExactlyOnce) {
     check_tiling(impl, *fans_around_a_sample());
 }
 
 // One triangle (random, axis-aligned, sliver, tiny, on pixel centres, off the snap grid), any sample pattern and
 // snap precision, in perspective or not: its samples are exactly the reference's.
-RASTER_DRAWING_PROPERTY(Coverage, coveredSamplesEqualTheExactIntegerReference) {
+RASTER_RENDERER_PROPERTY(Coverage, coveredSamplesEqualTheExactIntegerReference) {
     check_tiling(impl, *single_triangles());
 }
 

@@ -50,7 +50,7 @@ RASTER_PROPERTY(Depth, isMonotoneInViewDistanceOverNearToFar) {
 // shows the triangle nearest along its ray, found exactly on the snapped triangles (1/w is affine in screen
 // space); samples where the two nearest depths are within the derived error of the compared depth
 // (depth_precision.h) are ties and may show either.
-RASTER_DRAWING_PROPERTY(Depth, zBufferKeepsTheNearestSurface) {
+RASTER_RENDERER_PROPERTY(Depth, zBufferKeepsTheNearestSurface) {
     const LayeredCase c = *overlapping_triangles();
     RC_CLASSIFY(true, c.kind);
     const Frame& frame = c.frame;
@@ -118,7 +118,7 @@ RASTER_DRAWING_PROPERTY(Depth, zBufferKeepsTheNearestSurface) {
 
 // Fronto-parallel triangles at distinct power-of-two depths (no two surfaces ever tie) drawn in two orders give the
 // same visibility buffer, bit for bit: the same triangle, barycentrics and depth at every sample.
-RASTER_DRAWING_PROPERTY(Depth, imageDoesNotDependOnDrawOrderWithoutTies) {
+RASTER_RENDERER_PROPERTY(Depth, imageDoesNotDependOnDrawOrderWithoutTies) {
     const LayeredCase c = *fronto_parallel_layers();
     RC_CLASSIFY(true, c.kind);
     const std::vector<ClipTriangle> triangles = project(impl, c);
@@ -142,7 +142,7 @@ RASTER_DRAWING_PROPERTY(Depth, imageDoesNotDependOnDrawOrderWithoutTies) {
 // The same triangle drawn twice, then a copy through the same vertices in the other winding: every depth key ties,
 // and the documented rule (per_sample.h: "on an exact tie the earlier one stays") leaves each covered sample to
 // the first triangle drawn.
-RASTER_DRAWING_PROPERTY(Depth, exactTiesKeepTheEarlierTriangle) {
+RASTER_RENDERER_PROPERTY(Depth, exactTiesKeepTheEarlierTriangle) {
     const ClipCase c = *perspective_triangles_inside();
     RC_CLASSIFY(true, c.kind);
     const ClipTriangle& t = c.triangle;

@@ -57,7 +57,7 @@ bool same_bits(float a, float b) { return a == b || (std::isnan(a) && std::isnan
 
 // Two fronto-parallel quads filling the view at view depths w1 < w2 anywhere in [1e-6, 1e9], w2 >= w1 (1 + 2^-19),
 // rendered in either order: every sample shows the nearer quad, at view depth w1 within 2^-22 relative.
-RASTER_DRAWING_PROPERTY(Extremes, nearOneMillionthAndFarOneBillionKeepTheNearerSurface) {
+RASTER_RENDERER_PROPERTY(Extremes, nearOneMillionthAndFarOneBillionKeepTheNearerSurface) {
     const DepthPairCase c = *depth_pairs_over_extreme_range();
     RC_CLASSIFY(true, c.kind);
     Scene scene = looking_down_negative_z(90.0f, 1e-6f, 1e9f, 1);
@@ -89,14 +89,14 @@ RASTER_DRAWING_PROPERTY(Extremes, verticesUpTo2To20PixelsOffScreenCoverTheirVisi
 
 // Two slivers of aspect ~1e6 sharing their long edge (16384 px long at 16 sub-pixel bits, the fixed-point limit,
 // or across a 32 px frame): exactly the reference's samples, and the shared edge's samples exactly once.
-RASTER_DRAWING_PROPERTY(Extremes, sliversOfAspectOneMillionAreWatertightAndExact) {
+RASTER_RENDERER_PROPERTY(Extremes, sliversOfAspectOneMillionAreWatertightAndExact) {
     check_tiling(impl, *sliver_pairs());
 }
 
 // Triangles smaller than one sub-pixel unit (1/256 px at 8 bits), a few units, or under one square pixel, all at
 // a sample: they cover exactly the reference's samples (often none, never a crash, and never dropped for being
 // small when their snapped form holds a sample).
-RASTER_DRAWING_PROPERTY(Extremes, trianglesSmallerThanASubPixelCoverExactlyTheReferenceSamples) {
+RASTER_RENDERER_PROPERTY(Extremes, trianglesSmallerThanASubPixelCoverExactlyTheReferenceSamples) {
     check_tiling(impl, *sub_pixel_triangles());
 }
 
@@ -170,7 +170,7 @@ RASTER_DRAWING_PROPERTY(Extremes, nonFiniteCoordinatesAreRejectedCleanly) {
 // nothing overflows or goes subnormal (the generator's ranges are chosen for that, see
 // generators/scene_extremes.cpp). And a triangle at +-3e38, whose clip coordinates overflow to Inf and NaN,
 // changes nothing else and leaves every value in the visibility buffer finite.
-RASTER_DRAWING_PROPERTY(Extremes, sceneExtentsNearFloatLimitsRenderExactlyScaled) {
+RASTER_RENDERER_PROPERTY(Extremes, sceneExtentsNearFloatLimitsRenderExactlyScaled) {
     const ScaledSceneCase c = *scenes_scaled_towards_float_limits();
     RC_CLASSIFY(true, c.kind);
     auto scene_scaled_by = [&](int exponent) {

@@ -66,7 +66,7 @@ std::vector<EdgeSample> owners_on_the_shared_edge(const Implementation& impl, co
 
 // Pairs sharing an edge through samples: each sample on the open edge is covered once, by the triangle the rule
 // names.
-RASTER_DRAWING_PROPERTY(FillRule, sharedEdgeSamplesBelongToTheTriangleRightOfOrBelowTheEdge) {
+RASTER_RENDERER_PROPERTY(FillRule, sharedEdgeSamplesBelongToTheTriangleRightOfOrBelowTheEdge) {
     const TilingCase c = *pairs_sharing_an_edge_through_samples();
     RC_CLASSIFY(true, c.kind);
     owners_on_the_shared_edge(impl, c, {1, 0}, {0, 1});
@@ -74,7 +74,7 @@ RASTER_DRAWING_PROPERTY(FillRule, sharedEdgeSamplesBelongToTheTriangleRightOfOrB
 
 // The same pair after a mirror or a quarter turn of the (square, symmetric-pattern) frame: the owner of each moved
 // sample is the triangle the rule names in the moved scene, the original nudge carried back by the inverse map.
-RASTER_DRAWING_PROPERTY(FillRule, ownershipChangesUnderMirrorsAndQuarterTurnsAsTheRuleSays) {
+RASTER_RENDERER_PROPERTY(FillRule, ownershipChangesUnderMirrorsAndQuarterTurnsAsTheRuleSays) {
     const TilingCase c = *symmetric_pairs_sharing_an_edge();
     const FrameSymmetry g = *rc::gen::elementOf(square_symmetries());
     RC_CLASSIFY(true, g.name);

@@ -1,6 +1,11 @@
 // The real implementation and the backends, as values the properties take.
 #include "properties/implementation.h"
 
+#include <cstdlib>
+
+#include "backends/plugin/plugin_library.h"
+#include "properties/raster_stages_plugin.h"
+
 namespace raster::properties {
 
 const std::vector<Backend>& drawing_backends() {
@@ -16,6 +21,19 @@ const std::vector<Backend>& drawing_backends() {
 
 const Backend& reference_backend() { return drawing_backends()[0]; }
 const Backend& production_backend() { return drawing_backends()[1]; }
+
+std::vector<Backend> plugin_backends() {
+    std::vector<Backend> list;
+    Backend stages{"raster_stages_plugin"};
+    stages.plugin = raster_stages_plugin();
+    list.push_back(stages);
+    if (const char* path = std::getenv("RASTER_PROPERTIES_PLUGIN"); path && *path) {
+        Backend named{"plugin"};
+        named.plugin = plugin::PluginLibrary::open(path);
+        list.push_back(named);
+    }
+    return list;
+}
 
 const Implementation& real_implementation() {
     static const Implementation real{"real", StageFunctions{}, BuildingBlocks{}, production_backend()};

@@ -3,12 +3,17 @@
 // real ones; a bug of the catalogue (mutants/bugs.txt) is planted into the source itself, never swapped in here.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "raster/frame/frame.h"
 #include "properties/stage_functions.h"
 #include "properties/building_blocks.h"
+
+namespace raster::plugin {
+class PluginLibrary;  // backends/plugin/plugin_library.h
+}
 
 namespace raster::properties {
 
@@ -20,6 +25,9 @@ struct Backend {
     bool allow_simd = true;
     bool hierarchical_z = true;
     int threads = 1;
+    // Set: a plugin's rasterizer (raster_plugin.h) draws every whole frame in raster's place (stage_driver.h), and
+    // only the renderer properties run on it.
+    std::shared_ptr<const plugin::PluginLibrary> plugin;
 };
 
 // The backends every drawing property runs on: the reference, then four tiled configurations that take every
@@ -28,6 +36,11 @@ struct Backend {
 const std::vector<Backend>& drawing_backends();
 const Backend& production_backend();  // tiled, SIMD coverage, hierarchical Z, 2 threads
 const Backend& reference_backend();   // the reference rasterizer, 1 thread
+
+// The plugin backends the renderer properties also run on: raster's own stages behind the plugin interface
+// (raster_stages_plugin.h), which must pass them, and the library RASTER_PROPERTIES_PLUGIN names, when set, as
+// "plugin" (docs/plugins.md). Throws InputError when that library cannot be loaded.
+std::vector<Backend> plugin_backends();
 
 struct Implementation {
     std::string name;                // "real"

@@ -1,4 +1,5 @@
-// The property tests' main: one gtest per registered property, and per drawing backend for a drawing property; 1000
+// The property tests' main: one gtest per registered property, per drawing backend for a drawing property and per
+// plugin backend for a renderer property (RASTER_PROPERTIES_PLUGIN=PATH adds a plugin of yours as "plugin"); 1000
 // cases each from a fixed seed, printed, unless RC_PARAMS says otherwise (the soak sets max_success and no seed, so
 // it draws a fresh one each run).
 #include <cstdlib>
@@ -6,6 +7,7 @@
 #include <iostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -31,7 +33,7 @@ private:
     Backend backend_;
 };
 
-void register_property_tests() {
+void register_property_tests(const std::vector<Backend>& plugins) {
     for (const Property& p : all_properties()) {
         auto add = [&](const std::string& name, const Backend& backend) {
             ::testing::RegisterTest(p.suite.c_str(), name.c_str(), nullptr, nullptr, p.file.c_str(), p.line,
@@ -44,6 +46,8 @@ void register_property_tests() {
             continue;
         }
         for (const Backend& backend : drawing_backends()) add(p.name + "/" + backend.name, backend);
+        if (p.any_renderer)
+            for (const Backend& backend : plugins) add(p.name + "/" + backend.name, backend);
     }
 }
 
@@ -62,6 +66,13 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) listing = listing || std::strcmp(argv[i], "--gtest_list_tests") == 0;
     if (!listing) std::cout << "properties: RC_PARAMS=\"" << std::getenv("RC_PARAMS") << "\"\n";
     ::testing::InitGoogleTest(&argc, argv);
-    raster::properties::register_property_tests();
+    std::vector<raster::properties::Backend> plugins;
+    try {
+        plugins = raster::properties::plugin_backends();
+    } catch (const std::exception& error) {  // RASTER_PROPERTIES_PLUGIN names no loadable plugin
+        std::cerr << "properties: RASTER_PROPERTIES_PLUGIN: " << error.what() << "\n";
+        return 2;
+    }
+    raster::properties::register_property_tests(plugins);
     return RUN_ALL_TESTS();
 }

@@ -34,8 +34,8 @@ size_t suite_rank(const std::string& suite) {
 }  // namespace
 
 bool register_property(const char* suite, const char* name, void (*check)(const Implementation&), bool draws,
-                       const char* file, int line) {
-    registered().push_back({suite, name, check, draws, file, line});
+                       bool any_renderer, const char* file, int line) {
+    registered().push_back({suite, name, check, draws, any_renderer, file, line});
     return true;
 }
 

@@ -18,7 +18,7 @@ namespace raster::properties {
 // boundary err, by at most h^2 each. A segment meets at most 3 + (|dx| + |dy|) / h cells, and |dx| + |dy| <=
 // sqrt(2) length, so for the snapped triangle's area A and perimeter P (pixels):
 //     |covered / N^2 - A| <= sqrt(2) P / N + 9 / N^2.
-RASTER_DRAWING_PROPERTY(Sampling, gridCoverageConvergesToTheExactAreaWithinAPerimeterBound) {
+RASTER_RENDERER_PROPERTY(Sampling, gridCoverageConvergesToTheExactAreaWithinAPerimeterBound) {
     const TilingCase c = *grid_sampled_triangles();
     RC_CLASSIFY(true, c.kind);
     const Frame& frame = c.frame;

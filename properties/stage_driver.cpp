@@ -4,6 +4,7 @@
 
 #include <bit>
 
+#include "backends/plugin/plugin_renderer.h"
 #include "raster/frame/shadow_pass.h"
 #include "raster/rasterize/tile_rasterizer.h"
 
@@ -72,8 +73,39 @@ reference::Point snapped(const Frame& frame, const glm::vec4& clip) {
     return reference::snapped_vertex(clip, frame.width, frame.height, frame.snap_bits);
 }
 
+namespace {
+thread_local size_t rasterizer_run_count = 0;
+
+// The plugin draws whole frames only: raster's stages run on a plugin backend would check raster, not the plugin.
+void refuse_plugin(const Implementation& impl, const char* entry) {
+    if (impl.backend.plugin)
+        throw std::logic_error(std::string("a property run on the plugin backend called ") + entry +
+                               ", raster's own stages: only whole frames (draw, coverage_counts, render_with) reach "
+                               "a plugin, so register it with RASTER_DRAWING_PROPERTY, not RASTER_RENDERER_PROPERTY");
+}
+
+// The triangles as one frame for the plugin: the frame's size, its sample positions by the implementation's
+// sample_offsets stage, its sub-pixel bits and view volume; no culling.
+VisibilityBuffer draw_on_plugin(const Implementation& impl, const Frame& frame,
+                                const std::vector<ClipTriangle>& triangles) {
+    plugin::ClipSpaceFrame request;
+    request.width = frame.width;
+    request.height = frame.height;
+    request.sample_offsets = impl.stages.sample_offsets(frame.samples, frame.pattern);
+    request.subpixel_bits = frame.snap_bits;
+    request.orthographic = frame.volume.orthographic;
+    request.near_plane = frame.volume.near;
+    request.far_plane = frame.volume.far;
+    for (const ClipTriangle& t : triangles) request.triangles.push_back(t.v);
+    VisibilityBuffer visibility;
+    impl.backend.plugin->draw(request, visibility);
+    return visibility;
+}
+}  // namespace
+
 std::vector<TriangleSetup> set_up(const Implementation& impl, const Frame& frame,
                                   const std::vector<ClipTriangle>& triangles) {
+    refuse_plugin(impl, "set_up");
     std::vector<TriangleSetup> setups;
     FrameParams params = frame_params(frame.width, frame.height, frame.snap_bits);
     params.clip = frame.volume;
@@ -85,14 +117,12 @@ std::vector<TriangleSetup> set_up(const Implementation& impl, const Frame& frame
     return setups;
 }
 
-namespace {
-thread_local size_t rasterizer_run_count = 0;
-}  // namespace
 
 size_t rasterizer_runs() { return rasterizer_run_count; }
 
 VisibilityBuffer rasterize_setups(const Implementation& impl, const Frame& frame,
                                   const std::vector<TriangleSetup>& setups) {
+    refuse_plugin(impl, "rasterize_setups");
     FrameParams params =
         frame_params(frame.width, frame.height, frame.snap_bits, impl.stages.sample_offsets(frame.samples, frame.pattern));
     params.threads = impl.backend.threads;
@@ -105,6 +135,10 @@ VisibilityBuffer rasterize_setups(const Implementation& impl, const Frame& frame
 }
 
 VisibilityBuffer draw(const Implementation& impl, const Frame& frame, const std::vector<ClipTriangle>& triangles) {
+    if (impl.backend.plugin) {
+        ++rasterizer_run_count;
+        return draw_on_plugin(impl, frame, triangles);
+    }
     return rasterize_setups(impl, frame, set_up(impl, frame, triangles));
 }
 
@@ -120,6 +154,7 @@ std::vector<int> coverage_counts(const Implementation& impl, const Frame& frame,
 }
 
 ShadowMaps shadow_maps_with(const Implementation& impl, const Scene& scene, const std::vector<glm::vec3>& world_positions) {
+    refuse_plugin(impl, "shadow_maps_with");
     ++rasterizer_run_count;
     return render_shadow_maps(scene, world_positions, raster_backend(impl.backend.path, impl.backend.allow_simd),
                               impl.backend.threads);
@@ -131,6 +166,11 @@ RenderResult render_with(const Implementation& impl, const Scene& scene) {
     options.path = impl.backend.path;
     options.allow_simd = impl.backend.allow_simd;
     ++rasterizer_run_count;
+    if (impl.backend.plugin) {
+        RenderResult result;
+        plugin::PluginRenderer(impl.backend.plugin).render_into(scene, options, result);
+        return result;
+    }
     if (scene.settings.modes.hierarchical_z == impl.backend.hierarchical_z) return render(scene, options);
     Scene configured = scene;
     configured.settings.modes.hierarchical_z = impl.backend.hierarchical_z;

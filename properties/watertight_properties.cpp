@@ -8,17 +8,17 @@
 namespace raster::properties {
 
 // Random convex polygons, fanned from a corner or from an inside point.
-RASTER_DRAWING_PROPERTY(Watertight, convexPolygonFansCoverEveryInsideSampleExactlyOnce) {
+RASTER_RENDERER_PROPERTY(Watertight, convexPolygonFansCoverEveryInsideSampleExactlyOnce) {
     check_tiling(impl, *convex_polygon_fans());
 }
 
 // Grids of quads with jittered inner vertices, each quad split along a random diagonal.
-RASTER_DRAWING_PROPERTY(Watertight, jitteredGridsCoverEverySampleOfTheirRectangleExactlyOnce) {
+RASTER_RENDERER_PROPERTY(Watertight, jitteredGridsCoverEverySampleOfTheirRectangleExactlyOnce) {
     check_tiling(impl, *jittered_grids());
 }
 
 // Strips of triangles between two rails.
-RASTER_DRAWING_PROPERTY(Watertight, triangleStripsCoverEverySampleBetweenTheirRailsExactlyOnce) {
+RASTER_RENDERER_PROPERTY(Watertight, triangleStripsCoverEverySampleBetweenTheirRailsExactlyOnce) {
     check_tiling(impl, *triangle_strips());
 }
 
