@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # check_debian_package.sh BUILD: packs BUILD with CPack into a .deb, installs it with apt-get (sudo when not root),
 # checks that the installed raster prints its version and renders /usr/share/raster/examples/scenes/teapot.yaml
-# from a scratch folder to a PNG, then removes the package. Exit 0 when all of it works, 1 otherwise.
+# from a scratch folder to a PNG, that the installed example plugin's source builds against the installed
+# <raster/raster_plugin.h> and that the oracle finds its bugs in the installed teapot (docs/plugins.md), then removes
+# the package. Exit 0 when all of it works, 1 otherwise.
 set -euo pipefail
 build=${1:?usage: tools/check_debian_package.sh BUILD}
 build=$(cd "$build" && pwd)
@@ -29,4 +31,14 @@ if [[ ! -s "$scratch/teapot.png" ]] || [[ "$(head -c 8 "$scratch/teapot.png" | o
   echo "check_debian_package: the installed raster wrote no PNG" >&2
   exit 1
 fi
-echo "check_debian_package: installed, rendered the teapot, removed"
+# A plugin built as a user would, against the installed header only.
+cc -shared -fPIC -O2 /usr/share/raster/examples/plugin/naive_rasterizer.c -o "$scratch/libmine.so" -lm
+status=0
+(cd "$scratch" && /usr/bin/raster compare /usr/share/raster/examples/scenes/teapot.yaml --backend plugin:./libmine.so \
+  > compare.txt 2>&1) || status=$?
+if [[ $status -ne 1 ]] || ! grep -q "plugin naive rasterizer" "$scratch/compare.txt"; then
+  echo "check_debian_package: raster compare of the installed example plugin exited $status, not 1 (its bugs found):" >&2
+  cat "$scratch/compare.txt" >&2
+  exit 1
+fi
+echo "check_debian_package: installed, rendered the teapot, built the example plugin and found its bugs, removed"

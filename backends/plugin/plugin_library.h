@@ -4,37 +4,15 @@
 // depths derived.
 #pragma once
 
-#include <array>
 #include <memory>
-#include <stdexcept>
 #include <string>
-#include <vector>
 
-#include <glm/vec2.hpp>
-#include <glm/vec4.hpp>
-
+#include "backends/plugin/clip_space_frame.h"
+#include "backends/plugin/plugin_error.h"
 #include "backends/plugin/raster_plugin.h"
 #include "raster/rasterize/visibility_buffer.h"
 
 namespace raster::plugin {
-
-// The plugin failed, or broke the interface's contract (an id past the frame's triangles, non-finite
-// barycentrics): a finding about the plugin, not bad input.
-class PluginError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
-
-// What the plugin is asked to draw: raster_plugin_frame, in C++ types.
-struct ClipSpaceFrame {
-    int width = 0, height = 0;
-    std::vector<glm::vec2> sample_offsets;  // from the pixel's upper-left corner
-    int subpixel_bits = 8;
-    bool cull_backfaces = false;
-    bool orthographic = false;
-    float near_plane = 0.1f, far_plane = 100.0f;
-    std::vector<std::array<glm::vec4, 3>> triangles;  // clip space, a b c
-};
 
 // The interface's three entry points.
 struct PluginFunctions {

@@ -3,11 +3,14 @@
 // each covered sample), and the view depth they give.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include <glm/vec3.hpp>
 
-#include "backends/plugin/plugin_library.h"
+#include "backends/plugin/clip_space_frame.h"
+#include "backends/plugin/plugin_error.h"
+#include "raster/rasterize/visibility_buffer.h"
 
 namespace raster::plugin {
 

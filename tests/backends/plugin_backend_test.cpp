@@ -18,11 +18,10 @@
 #include "backends/plugin/plugin_samples.h"
 #include "harness/comparison/comparison_output.h"
 #include "harness/comparison/scene_comparison.h"
+#include "properties/raster_stages_plugin.h"
 #include "raster/compat/scene_loader.h"
 #include "raster/core/errors.h"
 #include "raster/frame/render.h"
-#include "raster/geometry/front_end.h"
-#include "raster/rasterize/reference_rasterizer.h"
 #include "tests/support/temp_dir.h"
 
 namespace raster {
@@ -32,31 +31,6 @@ const std::filesystem::path kScenes = std::filesystem::path(RASTER_SOURCE_DIR) /
 
 uint32_t current_abi() { return RASTER_PLUGIN_ABI_VERSION; }
 const char* test_name() { return "test plugin"; }
-
-// raster's own clip, setup and reference rasterizer behind the C interface, reading nothing but the frame it is
-// handed: what a correct plugin answers.
-int raster_stages_draw(const raster_plugin_frame* in, raster_plugin_samples* out) {
-    std::vector<glm::vec2> offsets(static_cast<size_t>(in->samples));
-    std::memcpy(offsets.data(), in->sample_offsets, offsets.size() * sizeof(glm::vec2));
-    FrameParams params = frame_params(in->width, in->height, in->subpixel_bits, offsets);
-    params.clip = ClipVolume{in->near_plane, in->far_plane, 1.0, in->orthographic != 0};
-    TransformedScene geometry;
-    for (uint32_t t = 0; t < in->triangle_count; ++t) {
-        for (int k = 0; k < 3; ++k) {
-            const float* v = in->clip_positions + 12 * t + 4 * k;
-            geometry.clip.emplace_back(v[0], v[1], v[2], v[3]);
-        }
-        geometry.triangles.push_back({{3 * t, 3 * t + 1, 3 * t + 2}});
-    }
-    VisibilityBuffer visibility;
-    rasterize_reference(set_up_triangles(geometry, params, in->cull_backfaces != 0), params, visibility);
-    for (size_t i = 0; i < visibility.size(); ++i) {
-        out->triangle[i] = visibility.triangle[i];
-        std::memcpy(out->barycentrics + 3 * i, &visibility.bary[i], sizeof(glm::vec3));
-    }
-    out->barycentrics_written = 1;
-    return RASTER_PLUGIN_DRAWN;
-}
 
 std::shared_ptr<const plugin::PluginLibrary> in_process(int (*draw)(const raster_plugin_frame*, raster_plugin_samples*),
                                                        uint32_t (*abi)() = current_abi) {
@@ -69,11 +43,12 @@ RenderResult render_with(const Renderer& renderer, const Scene& scene) {
     return result;
 }
 
-// Every corpus scene raster draws with its default modes, as it is and with back faces culled (opaque or
-// transparent, lit, shadowed, textured, orthographic, at its own sample count): the same ids, barycentrics and
-// image bytes through the plugin interface as from raster itself. The view depths the host derives from the barycentrics agree to float rounding.
+// raster's own stages behind the C interface (properties/raster_stages_plugin.h), on every corpus scene raster
+// draws with its default modes, as it is and with back faces culled (opaque or transparent, lit, shadowed, textured,
+// orthographic, at its own sample count): the same ids, barycentrics and image bytes through the plugin interface as
+// from raster itself. The view depths the host derives from the barycentrics agree to float rounding.
 TEST(PluginBackend, rastersOwnStagesBehindTheInterfaceGiveRastersBytes) {
-    const plugin::PluginRenderer renderer(in_process(raster_stages_draw));
+    const plugin::PluginRenderer renderer(properties::raster_stages_plugin());
     for (const auto& entry : std::filesystem::directory_iterator(kScenes))
         for (const bool cull : {false, true}) {
         Scene scene = load_scene(entry.path());
