@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/backends.h"
+#include "backends/plugin/plugin_error.h"
 #include "apps/command.h"
 #include "apps/render_outputs.h"
 #include "apps/settings_flags.h"
@@ -115,6 +116,9 @@ int run_render(const RenderFlags& flags, std::ostream& out, std::ostream& err) {
     } catch (const OutputError& error) {
         err << "raster render: error: " << error.what() << "\n";
         return kExitIoError;
+    } catch (const plugin::PluginError& error) {  // the rasterizer under test failed
+        err << "raster render: " << flags.scene << ": " << error.what() << "\n";
+        return kExitCheckFailed;
     } catch (const std::runtime_error& error) {  // no OpenGL context
         err << "raster render: error: " << error.what() << "\n";
         return kExitIoError;

@@ -38,7 +38,8 @@ const Backend& production_backend();  // tiled, SIMD coverage, hierarchical Z, 2
 const Backend& reference_backend();   // the reference rasterizer, 1 thread
 
 // The plugin backends the renderer properties also run on: raster's own stages behind the plugin interface
-// (raster_stages_plugin.h), which must pass them, and the library RASTER_PROPERTIES_PLUGIN names, when set, as
+// (raster_stages_plugin.h), which must pass them, and the library RASTER_PROPERTIES_PLUGIN names, when set (or
+// OpenGL for RASTER_PROPERTIES_PLUGIN=gl, where the build has the GL backend), as
 // "plugin" (docs/plugins.md). Throws InputError when that library cannot be loaded.
 std::vector<Backend> plugin_backends();
 

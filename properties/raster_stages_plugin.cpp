@@ -13,7 +13,7 @@ namespace {
 uint32_t abi_version() { return RASTER_PLUGIN_ABI_VERSION; }
 const char* name() { return "raster's stages"; }
 
-int draw(const raster_plugin_frame* in, raster_plugin_samples* out) {
+int draw(const raster_plugin_frame* in, raster_plugin_samples* out, bool barycentrics) {
     std::vector<glm::vec2> offsets(static_cast<size_t>(in->samples));
     std::memcpy(offsets.data(), in->sample_offsets, offsets.size() * sizeof(glm::vec2));
     FrameParams params = frame_params(in->width, in->height, in->subpixel_bits, offsets);
@@ -31,16 +31,22 @@ int draw(const raster_plugin_frame* in, raster_plugin_samples* out) {
     thread_local VisibilityBuffer visibility;
     rasterize_reference(set_up_triangles(geometry, params, in->cull_backfaces != 0), params, visibility);
     std::memcpy(out->triangle, visibility.triangle.data(), visibility.size() * sizeof(uint32_t));
-    std::memcpy(out->barycentrics, visibility.bary.data(), visibility.size() * sizeof(glm::vec3));
-    out->barycentrics_written = 1;
+    if (barycentrics) {
+        std::memcpy(out->barycentrics, visibility.bary.data(), visibility.size() * sizeof(glm::vec3));
+        out->barycentrics_written = 1;
+    }
     return RASTER_PLUGIN_DRAWN;
 }
 
+int draw_with_barycentrics(const raster_plugin_frame* in, raster_plugin_samples* out) { return draw(in, out, true); }
+int draw_ids_only(const raster_plugin_frame* in, raster_plugin_samples* out) { return draw(in, out, false); }
+
 }  // namespace
 
-std::shared_ptr<const plugin::PluginLibrary> raster_stages_plugin() {
-    return std::make_shared<plugin::PluginLibrary>(plugin::PluginFunctions{abi_version, name, draw},
-                                                   "raster_stages_plugin (in process)");
+std::shared_ptr<const plugin::PluginLibrary> raster_stages_plugin(bool barycentrics) {
+    return std::make_shared<plugin::PluginLibrary>(
+        plugin::PluginFunctions{abi_version, name, barycentrics ? draw_with_barycentrics : draw_ids_only},
+        "raster_stages_plugin (in process)");
 }
 
 }  // namespace raster::properties

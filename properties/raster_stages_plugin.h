@@ -9,7 +9,8 @@
 
 namespace raster::properties {
 
-// The plugin, named "raster's stages", its functions in this process.
-std::shared_ptr<const plugin::PluginLibrary> raster_stages_plugin();
+// The plugin, named "raster's stages", its functions in this process; without `barycentrics` it answers the
+// triangle ids only, and the host solves the barycentrics.
+std::shared_ptr<const plugin::PluginLibrary> raster_stages_plugin(bool barycentrics = true);
 
 }  // namespace raster::properties

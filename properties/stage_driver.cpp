@@ -4,6 +4,8 @@
 
 #include <bit>
 
+#include <rapidcheck.h>
+
 #include "backends/plugin/plugin_renderer.h"
 #include "raster/frame/shadow_pass.h"
 #include "raster/rasterize/tile_rasterizer.h"
@@ -98,7 +100,11 @@ VisibilityBuffer draw_on_plugin(const Implementation& impl, const Frame& frame,
     request.far_plane = frame.volume.far;
     for (const ClipTriangle& t : triangles) request.triangles.push_back(t.v);
     VisibilityBuffer visibility;
-    impl.backend.plugin->draw(request, visibility);
+    try {
+        impl.backend.plugin->draw(request, visibility);
+    } catch (const plugin::PluginRefusal& refusal) {  // a frame the plugin does not draw is no case for it
+        RC_DISCARD(refusal.what());
+    }
     return visibility;
 }
 }  // namespace
@@ -168,7 +174,11 @@ RenderResult render_with(const Implementation& impl, const Scene& scene) {
     ++rasterizer_run_count;
     if (impl.backend.plugin) {
         RenderResult result;
-        plugin::PluginRenderer(impl.backend.plugin).render_into(scene, options, result);
+        try {
+            plugin::PluginRenderer(impl.backend.plugin).render_into(scene, options, result);
+        } catch (const plugin::PluginRefusal& refusal) {
+            RC_DISCARD(refusal.what());
+        }
         return result;
     }
     if (scene.settings.modes.hierarchical_z == impl.backend.hierarchical_z) return render(scene, options);

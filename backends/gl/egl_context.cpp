@@ -54,10 +54,16 @@ EglContext::EglContext() {
     glGetIntegerv(GL_MAX_SAMPLES, &max_samples_);
 }
 
+void EglContext::make_current() const {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+        throw std::runtime_error("the GL backend: " + egl_error("eglMakeCurrent"));
+}
+
+// The display stays initialised: the surfaceless display is one per process, and terminating it would destroy
+// every other context on it (the GL plugin keeps one for the process, while GL renderers come and go).
 EglContext::~EglContext() {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
-    eglTerminate(display_);
 }
 
 }  // namespace raster::gl

@@ -92,4 +92,28 @@ GlFramebuffer::~GlFramebuffer() {
     if (depth_) glDeleteTextures(1, &depth_);
 }
 
+void begin_reversed_z_pass(const GlFramebuffer& framebuffer, int width, int height, bool per_sample,
+                           bool cull_backfaces) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glViewport(0, 0, width, height);
+    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);  // reversed Z: larger is nearer; a tie keeps the triangle drawn first
+    if (per_sample) {  // every sample shaded at its own position
+        glEnable(GL_SAMPLE_SHADING);
+        glMinSampleShading(1.0f);
+    } else {
+        glDisable(GL_SAMPLE_SHADING);
+    }
+    if (cull_backfaces) {
+        glEnable(GL_CULL_FACE);
+        glFrontFace(GL_CW);  // counter-clockwise in NDC, seen upside down
+        glCullFace(GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
+    const float far_depth = 0.0f;
+    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
+}
+
 }  // namespace raster::gl

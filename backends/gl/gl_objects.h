@@ -40,4 +40,11 @@ private:
     std::vector<uint32_t> colours_;
 };
 
+// Binds `framebuffer` for a pass over width x height pixels with raster's conventions: reversed-Z float depth (0..1
+// clip range, GL_GREATER, cleared to 0, the far value; a tie keeps the triangle drawn first), every sample shaded at
+// its own position when `per_sample`, and back faces culled when `cull_backfaces` (counter-clockwise in NDC is front,
+// seen upside down: the backend draws with y negated).
+void begin_reversed_z_pass(const GlFramebuffer& framebuffer, int width, int height, bool per_sample,
+                           bool cull_backfaces);
+
 }  // namespace raster::gl

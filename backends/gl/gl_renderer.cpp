@@ -19,6 +19,7 @@
 #include "backends/gl/gl_objects.h"
 #include "backends/gl/gl_scene.h"
 #include "backends/gl/gl_shaders.h"
+#include "backends/gl/gl_visibility.h"
 #include "raster/core/errors.h"
 #include "raster/core/stopwatch.h"
 
@@ -106,85 +107,27 @@ private:
     GLuint array_ = 0, buffer_ = 0;
 };
 
-// The state both passes draw with: the framebuffer, reversed-Z depth, per-sample shading, culling.
-void begin_pass(const GlFramebuffer& framebuffer, const RenderSettings& settings, bool per_sample) {
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glViewport(0, 0, settings.width, settings.height);
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);  // reversed Z: larger is nearer; a tie keeps the triangle drawn first
-    if (per_sample) {  // every sample shaded at its own position
-        glEnable(GL_SAMPLE_SHADING);
-        glMinSampleShading(1.0f);
-    } else {
-        glDisable(GL_SAMPLE_SHADING);
-    }
-    if (settings.cull_backfaces) {
-        glEnable(GL_CULL_FACE);
-        glFrontFace(GL_CW);  // counter-clockwise in NDC, seen upside down
-        glCullFace(GL_BACK);
-    } else {
-        glDisable(GL_CULL_FACE);
-    }
-    const float far_depth = 0.0f;
-    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
-}
-
-// The visibility pass and its read back into `visibility` (raster's sample order, empty samples zeroed).
+// The visibility pass over the scene's draws (gl_visibility.h), its view depth the distance along the view direction.
 void draw_visibility(const Scene& scene, const GlScene& drawn, const VertexInput& input, const glm::mat4& clip,
                      VisibilityBuffer& visibility) {
-    const RenderSettings& settings = scene.settings;
-    const int width = settings.width, height = settings.height, samples = settings.samples;
-    const GlFramebuffer frame(width, height, samples, {GL_R32UI, GL_RGBA32F}, true);
-    begin_pass(frame, settings, true);
-    const GLuint empty = kNoTriangle;
-    glClearNamedFramebufferuiv(frame.id(), GL_COLOR, 0, &empty);
-    const glm::vec4 zero(0.0f);
-    glClearNamedFramebufferfv(frame.id(), GL_COLOR, 1, glm::value_ptr(zero));
     const GlProgram program(visibility_vertex_shader_source(), visibility_fragment_shader_source(),
                             visibility_geometry_shader_source());
     glUseProgram(program.id());
-    glUniform2f(program.uniform("viewport"), static_cast<float>(width), static_cast<float>(height));
     glUniformMatrix4fv(program.uniform("view_projection"), 1, GL_FALSE, glm::value_ptr(clip));
     glUniform3fv(program.uniform("eye"), 1, glm::value_ptr(scene.camera.eye));
     const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.eye);
     glUniform3fv(program.uniform("forward"), 1, glm::value_ptr(forward));
-    glBindVertexArray(input.array());
-    for (const GlDraw& draw : drawn.draws) {
-        glUniform1ui(program.uniform("first_triangle"), draw.first_corner / 3);
-        glDrawArrays(GL_TRIANGLES, static_cast<GLint>(draw.first_corner), static_cast<GLsizei>(draw.corners));
-    }
-
-    const size_t count = static_cast<size_t>(width) * static_cast<size_t>(height) * static_cast<size_t>(samples);
-    GLuint buffers[2] = {0, 0};
-    glCreateBuffers(2, buffers);
-    glNamedBufferStorage(buffers[0], static_cast<GLsizeiptr>(count * sizeof(uint32_t)), nullptr, 0);
-    glNamedBufferStorage(buffers[1], static_cast<GLsizeiptr>(count * sizeof(glm::vec4)), nullptr, 0);
-    const GlProgram readback(visibility_readback_source(samples > 1).c_str());
-    glUseProgram(readback.id());
-    glUniform1i(readback.uniform("width"), width);
-    glUniform1i(readback.uniform("samples"), samples);
-    glUniform1i(readback.uniform("count"), static_cast<GLint>(count));
-    glBindTextureUnit(0, frame.colour(0));
-    glBindTextureUnit(1, frame.colour(1));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
-    const size_t groups = (count + 63) / 64, columns = std::min<size_t>(groups, 65535);
-    glDispatchCompute(static_cast<GLuint>(columns), static_cast<GLuint>((groups + columns - 1) / columns), 1);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    std::vector<uint32_t> ids(count);
-    std::vector<glm::vec4> data(count);
-    glGetNamedBufferSubData(buffers[0], 0, static_cast<GLsizeiptr>(count * sizeof(uint32_t)), ids.data());
-    glGetNamedBufferSubData(buffers[1], 0, static_cast<GLsizeiptr>(count * sizeof(glm::vec4)), data.data());
-    glDeleteBuffers(2, buffers);
-
-    visibility.resize(width, height, samples);
-    for (size_t i = 0; i < count; ++i) {
-        visibility.triangle[i] = ids[i];
-        const bool covered = ids[i] != kNoTriangle;
-        visibility.bary[i] = covered ? glm::vec3(data[i]) : glm::vec3(0.0f);
-        visibility.view_depth[i] = covered ? data[i].w : 0.0f;
-    }
+    VisibilityPass pass;
+    pass.width = scene.settings.width;
+    pass.height = scene.settings.height;
+    pass.samples = scene.settings.samples;
+    pass.cull_backfaces = scene.settings.cull_backfaces;
+    pass.program = program.id();
+    pass.vertex_array = input.array();
+    for (const GlDraw& draw : drawn.draws)
+        pass.draws.push_back({static_cast<int>(draw.first_corner), static_cast<int>(draw.corners),
+                              static_cast<uint32_t>(draw.first_corner / 3)});
+    draw_visibility_pass(pass, visibility);
 }
 
 }  // namespace
@@ -206,7 +149,8 @@ void GlRenderer::render_into(const Scene& scene, const RenderOptions& options, R
     const glm::mat4 clip = view_projection(scene.camera, width, height);
 
     const GlFramebuffer frame(width, height, samples, {GL_RGBA32F}, true);
-    begin_pass(frame, settings, samples > 1);  // supersampling shades every sample
+    // Supersampling shades every sample.
+    begin_reversed_z_pass(frame, width, height, samples > 1, settings.cull_backfaces);
     const glm::vec4 background(settings.background, 1.0f);
     glClearNamedFramebufferfv(frame.id(), GL_COLOR, 0, glm::value_ptr(background));
     const GlProgram program(vertex_shader_source(), fragment_shader_source());

@@ -47,10 +47,36 @@ std::string unsupported_by_gl(const Scene& scene) {
     if (modes.edges != exact.edges || modes.interpolation != exact.interpolation || modes.depth != exact.depth ||
         modes.clipping != exact.clipping)
         add("the precision modes (--edges, --interpolation, --depth-format, --clipping)");
+    // Reversed-Z depth at view depth v is near (far - v) / (v (far - near)): about near / v, and smallest just short
+    // of the far plane, where far - v is at least a float step of far (2^-24 far), so about 2^-24 near / far. Below
+    // 2^-126 it is subnormal, and llvmpipe flushes subnormal depth to 0, the cleared far value, which GL_GREATER
+    // never passes (docs/gl.md, finding 3): near / far must be at least 2^-102, 2^-100 with a margin.
+    if (scene.camera.projection == Projection::perspective && scene.camera.near < scene.camera.far * 0x1p-100f)
+        add("a near plane below far / 2^100 (reversed-Z depth would be subnormal, which llvmpipe flushes to zero)");
     // Its read backs hold 16 bytes a sample in one GL call, whose size is a 32-bit int.
     const uint64_t samples = uint64_t(settings.width) * uint64_t(settings.height) * uint64_t(settings.samples);
     if (samples * 16 > uint64_t(INT32_MAX)) add("frames over " + std::to_string(INT32_MAX / 16) + " samples");
     return what;
+}
+
+Scene gl_drawable(Scene scene) {
+    RenderSettings& settings = scene.settings;
+    const ShadingMode mode = settings.shading;
+    if (mode != ShadingMode::unlit && mode != ShadingMode::phong && mode != ShadingMode::blinn_phong)
+        settings.shading = ShadingMode::blinn_phong;
+    settings.samples = settings.samples > 1 ? 4 : 1;
+    settings.pattern = SamplePattern::standard;
+    settings.msaa = false;
+    settings.snap_bits = 8;
+    settings.modes = PrecisionModes{};
+    for (SceneMesh& mesh : scene.meshes)
+        for_each_material(mesh, [](Material& material) {
+            material.texture.reset();
+            material.opacity = 1.0f;
+        });
+    for (Light& light : scene.lights) light.shadows = false;
+    if (scene.lights.size() > kMaxLights) scene.lights.resize(kMaxLights);
+    return scene;
 }
 
 GlScene gl_scene(const Scene& scene) {

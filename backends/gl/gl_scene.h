@@ -32,6 +32,12 @@ struct GlScene {
 // What of `scene` the backend cannot draw ("textures", "shadows", ...), one line; empty when it draws all of it.
 std::string unsupported_by_gl(const Scene& scene);
 
+// The nearest scene the backend draws (for the differential fuzzer, whose scenes ask for everything): its shading
+// unlit, phong or blinn-phong (others become blinn-phong), 1 or 4 standard samples (more become 4), no MSAA, 8
+// sub-pixel bits, the exact precision modes, no textures, blending or shadows, at most 8 lights. unsupported_by_gl
+// of it is empty unless the frame is too large to read back or the near plane too close (finding 3).
+Scene gl_drawable(Scene scene);
+
 // The corners and draws of the valid `scene`. Missing normals are the average of the adjacent faces' unit normals
 // in world space (docs/conventions.md "Lighting"); file normals go through the inverse transpose of the model matrix.
 GlScene gl_scene(const Scene& scene);

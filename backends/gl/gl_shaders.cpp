@@ -106,6 +106,18 @@ void main() {
 )GLSL";
 }
 
+const char* clip_space_vertex_shader_source() {
+    return R"GLSL(#version 450 core
+layout(location = 0) in vec4 clip;
+invariant gl_Position;
+out float corner_depth;
+void main() {
+    corner_depth = 0.0;
+    gl_Position = vec4(clip.x, -clip.y, clip.z, clip.w);
+}
+)GLSL";
+}
+
 const char* visibility_geometry_shader_source() {
     return R"GLSL(#version 450 core
 // Hands every fragment the whole original triangle, before clipping: its corners' clip x, y and w, and their view
@@ -139,11 +151,22 @@ flat in vec3 depths;          // its corners' view depths
 layout(location = 0) out uint triangle_id;
 layout(location = 1) out vec4 sample_data;
 void main() {
-    // The sample's NDC (its pixel's corner plus its position in the pixel); the weights a with
-    // corners * a proportional to (x, y, 1) are the homogeneous barycentrics, normalised to sum to 1.
+    // The sample's NDC point P (its pixel's corner plus its position in the pixel). The weights a with
+    // sum_i a_i (x_i, y_i) = P sum_i a_i w_i are the null vector of the rows (x_i - P.x w_i) and (y_i - P.y w_i),
+    // their cross product: differences before products, so that a sub-pixel triangle, whose corners nearly
+    // coincide, keeps its weights, and no division by its vanishing determinant. Each corner is first scaled to its
+    // largest component and its weight divided by that scale again (all of them by the same factor), so that corners
+    // near the float limits do not overflow.
     vec2 ndc = 2.0 * (floor(gl_FragCoord.xy) + gl_SamplePosition) / viewport - 1.0;
-    vec3 a = inverse(corners) * vec3(ndc, 1.0);
-    vec3 bary = a / (a.x + a.y + a.z);
+    vec3 size = vec3(max(abs(corners[0].x), max(abs(corners[0].y), abs(corners[0].z))),
+                     max(abs(corners[1].x), max(abs(corners[1].y), abs(corners[1].z))),
+                     max(abs(corners[2].x), max(abs(corners[2].y), abs(corners[2].z))));
+    mat3 unit = mat3(corners[0] / size.x, corners[1] / size.y, corners[2] / size.z);
+    vec3 along_x = vec3(unit[0].x - ndc.x * unit[0].z, unit[1].x - ndc.x * unit[1].z, unit[2].x - ndc.x * unit[2].z);
+    vec3 along_y = vec3(unit[0].y - ndc.y * unit[0].z, unit[1].y - ndc.y * unit[1].z, unit[2].y - ndc.y * unit[2].z);
+    vec3 a = cross(along_x, along_y) * (min(size.x, min(size.y, size.z)) / size);  // a_i = a'_i / size_i, scaled
+    float sum = a.x + a.y + a.z;
+    vec3 bary = sum != 0.0 ? a / sum : vec3(1.0 / 3.0);  // 0: the sample sees the triangle's plane edge-on
     triangle_id = first_triangle + uint(gl_PrimitiveID);
     sample_data = vec4(bary, dot(bary, depths));
 }

@@ -16,6 +16,9 @@ const char* fragment_shader_source();
 // and the original triangle's barycentrics and the view depth into an RGBA32F one, solved at each sample's position
 // from the whole triangle (a geometry shader hands it over) rather than interpolated.
 const char* visibility_vertex_shader_source();
+// The same pass's vertex shader for triangles handed over in clip space (the GL plugin): each corner's position
+// as given, y negated (the backend draws upside down); the view depth left 0, for the caller to derive.
+const char* clip_space_vertex_shader_source();
 const char* visibility_geometry_shader_source();
 const char* visibility_fragment_shader_source();
 

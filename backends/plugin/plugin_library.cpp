@@ -76,7 +76,9 @@ PluginLibrary::~PluginLibrary() {
 }
 
 void PluginLibrary::draw(const ClipSpaceFrame& frame, VisibilityBuffer& out) const {
-    static_assert(sizeof(glm::vec3) == 3 * sizeof(float) && sizeof(glm::vec4) == 4 * sizeof(float));
+    static_assert(sizeof(glm::vec2) == 2 * sizeof(float) && sizeof(glm::vec3) == 3 * sizeof(float) &&
+                  sizeof(glm::vec4) == 4 * sizeof(float));
+    static_assert(RASTER_PLUGIN_NO_TRIANGLE == kNoTriangle);
     const int samples = static_cast<int>(frame.sample_offsets.size());
     out.resize(frame.width, frame.height, samples);
     // NaN until written, so that a plugin claiming barycentrics it left out is caught (complete_samples).
@@ -106,7 +108,7 @@ void PluginLibrary::draw(const ClipSpaceFrame& frame, VisibilityBuffer& out) con
     const int status = functions_.draw(&in, &answer);
     message.back() = '\0';  // whatever the plugin wrote, the message ends inside its buffer
     if (status == RASTER_PLUGIN_REFUSED)
-        throw InputError("plugin " + name_ + " does not draw this frame: " + message_of(message));
+        throw PluginRefusal("plugin " + name_ + " does not draw this frame: " + message_of(message));
     if (status != RASTER_PLUGIN_DRAWN)
         throw PluginError("plugin " + name_ + " failed (raster_plugin_draw returned " + std::to_string(status) +
                           "): " + message_of(message));

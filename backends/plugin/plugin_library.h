@@ -38,8 +38,8 @@ public:
 
     // Draws the frame: out.triangle[i] is the index into frame.triangles of the sample's visible triangle or
     // kNoTriangle, out.bary its perspective-correct barycentrics (the plugin's, or solved from the vertices),
-    // out.view_depth the view depth they give. Throws InputError when the plugin refuses the frame, PluginError when
-    // it fails or writes what the interface does not allow.
+    // out.view_depth the view depth they give. Throws PluginRefusal when the plugin refuses the frame, PluginError
+    // when it fails or writes what the interface does not allow.
     void draw(const ClipSpaceFrame& frame, VisibilityBuffer& out) const;
 
 private:

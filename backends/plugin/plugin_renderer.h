@@ -35,6 +35,8 @@ public:
     // "plugin NAME", NAME being what the plugin calls itself.
     std::string name() const override { return "plugin " + library_->name(); }
     bool gives_visibility() const override { return true; }
+    // Throws InputError for a scene in precision modes other than the exact ones, PluginRefusal when the plugin
+    // refuses the frame, PluginError when it fails or breaks the interface's contract.
     void render_into(const Scene& scene, const RenderOptions& options, RenderResult& result) const override;
 
 private:

@@ -32,6 +32,10 @@ double vertex_view_depth(const glm::vec4& clip, const ClipSpaceFrame& frame) {
 
 namespace {
 
+// How far from 1 the sum of a plugin's barycentrics may be before it breaks the contract: a gross error (weights of
+// another triangle, or unnormalised ones); finer ones are for the oracle and the properties to judge.
+constexpr double kBarycentricSumSlack = 0.01;
+
 std::string where(const ClipSpaceFrame& frame, size_t index) {
     const size_t samples = frame.sample_offsets.size();
     const size_t pixel = index / samples;
@@ -61,10 +65,12 @@ void complete_samples(const ClipSpaceFrame& frame, bool barycentrics_written, co
         glm::dvec3 bary;
         if (barycentrics_written) {
             bary = glm::dvec3(samples.bary[i]);
-            if (!std::isfinite(bary.x) || !std::isfinite(bary.y) || !std::isfinite(bary.z)) {
+            const double sum = bary.x + bary.y + bary.z;
+            if (!std::isfinite(sum) || std::abs(sum - 1.0) > kBarycentricSumSlack) {
                 std::ostringstream text;
                 text << "plugin " << plugin << " wrote barycentrics (" << bary.x << ", " << bary.y << ", " << bary.z
-                     << ") for triangle " << id << " at " << where(frame, i) << ": they must be finite";
+                     << ") for triangle " << id << " at " << where(frame, i)
+                     << ": they must be finite and sum to 1 (within " << kBarycentricSumSlack << ")";
                 throw PluginError(text.str());
             }
         } else {
@@ -77,6 +83,13 @@ void complete_samples(const ClipSpaceFrame& frame, bool barycentrics_written, co
         }
         double depth = 0.0;
         for (int k = 0; k < 3; ++k) depth += bary[k] * vertex_view_depth(triangle[static_cast<size_t>(k)], frame);
+        if (!std::isfinite(static_cast<float>(depth))) {
+            std::ostringstream text;
+            text << "plugin " << plugin << " drew triangle " << id << " at " << where(frame, i)
+                 << ", where its barycentrics give no finite view depth (" << depth
+                 << "): is it a triangle the plugin should have clipped?";
+            throw PluginError(text.str());
+        }
         samples.view_depth[i] = static_cast<float>(depth);
     }
 }

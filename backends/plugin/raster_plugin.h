@@ -17,7 +17,12 @@
  *    (y * width + x) * samples + s, rows from the top.
  *  - Front faces are counter-clockwise in NDC (y up), as OpenGL's default.
  *  - Barycentrics are perspective-correct, with respect to the triangle's three clip-space vertices as given
- *    (not to a clipped polygon's), and sum to 1.
+ *    (not to a clipped polygon's), and sum to 1 (raster stops the frame when they are not finite or their sum is
+ *    off by more than 0.01: finer errors are the oracle's to judge).
+ *  - Clip coordinates may be huge, infinite or NaN (the properties hand over triangles at the float limits): a
+ *    plugin must draw nothing of a triangle it cannot handle rather than fail.
+ *
+ * Any change to these structs changes RASTER_PLUGIN_ABI_VERSION, and raster refuses a plugin of another version.
  *
  * A plugin exports the three functions below with C linkage. raster calls them from one thread at a time; a plugin
  * may use threads of its own inside raster_plugin_draw.
@@ -72,11 +77,8 @@ typedef struct raster_plugin_samples {
     char* message;                /* RASTER_PLUGIN_MESSAGE_SIZE bytes for a refusal's or a failure's reason */
 } raster_plugin_samples;
 
-#if defined(_WIN32)
-#define RASTER_PLUGIN_EXPORT __declspec(dllexport)
-#else
+/* raster loads plugins with dlopen (POSIX): export with default visibility. */
 #define RASTER_PLUGIN_EXPORT __attribute__((visibility("default")))
-#endif
 
 /* Returns RASTER_PLUGIN_ABI_VERSION as the plugin was compiled. */
 RASTER_PLUGIN_EXPORT uint32_t raster_plugin_abi_version(void);

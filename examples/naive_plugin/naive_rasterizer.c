@@ -1,11 +1,13 @@
 /* naive_rasterizer.c: an example raster plugin (raster_plugin.h), deliberately the rasterizer a course starts from,
  * so that the framework has something to find in it (docs/plugins.md says what it finds):
- *  - a triangle with a vertex at or behind the near plane is dropped whole, not clipped;
+ *  - a triangle with a vertex in front of the near plane (w below it) is dropped whole, not clipped, and nothing is
+ *    clipped against the far plane or, in an orthographic frame, against either;
  *  - vertices are not snapped: edge functions are evaluated in float on the raw screen positions;
  *  - no fill rule: a sample exactly on an edge is inside (E >= 0), so a shared edge's samples go to both triangles
  *    and the z-buffer keeps whichever the depth test lets through;
  *  - barycentrics are the screen-space (affine) ones, without perspective correction.
- * It honours everything else the frame asks: the sample positions, culling, the reversed-Z depth test. */
+ * It honours the sample positions, culling and the reversed-Z depth test, and keeps to defined C on any input
+ * (non-finite and huge coordinates included). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +18,10 @@ typedef struct { float x, y, z; } ScreenVertex;
 
 static float edge(ScreenVertex a, ScreenVertex b, float px, float py) {
     return (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
+}
+
+static float clamp_to(float value, float low, float high) {
+    return value > low ? (value < high ? value : high) : low; /* NaN goes to low */
 }
 
 RASTER_PLUGIN_EXPORT uint32_t raster_plugin_abi_version(void) { return RASTER_PLUGIN_ABI_VERSION; }
@@ -45,7 +51,7 @@ RASTER_PLUGIN_EXPORT int raster_plugin_draw(const raster_plugin_frame* frame, ra
         }
         if (behind) continue;
         float area = edge(v[0], v[1], v[2].x, v[2].y);
-        if (area == 0.0f || !isfinite(area)) continue;
+        if (area == 0.0f || !isfinite(area)) continue; /* also every triangle with a non-finite vertex */
         /* Front faces are counter-clockwise with y up: clockwise on screen, negative area. */
         if (frame->cull_backfaces && area > 0.0f) continue;
         int corner[3] = {0, 1, 2}; /* which of the frame's a, b, c each of v is */
@@ -57,14 +63,11 @@ RASTER_PLUGIN_EXPORT int raster_plugin_draw(const raster_plugin_frame* frame, ra
             corner[2] = 1;
             area = -area;
         }
-        int x0 = (int)floorf(fminf(v[0].x, fminf(v[1].x, v[2].x)));
-        int x1 = (int)ceilf(fmaxf(v[0].x, fmaxf(v[1].x, v[2].x)));
-        int y0 = (int)floorf(fminf(v[0].y, fminf(v[1].y, v[2].y)));
-        int y1 = (int)ceilf(fmaxf(v[0].y, fmaxf(v[1].y, v[2].y)));
-        if (x0 < 0) x0 = 0;
-        if (y0 < 0) y0 = 0;
-        if (x1 > frame->width - 1) x1 = frame->width - 1;
-        if (y1 > frame->height - 1) y1 = frame->height - 1;
+        /* The bounding box, clamped to the image in float: converting a float beyond int's range is undefined. */
+        const int x0 = (int)clamp_to(floorf(fminf(v[0].x, fminf(v[1].x, v[2].x))), 0.0f, (float)(frame->width - 1));
+        const int x1 = (int)clamp_to(ceilf(fmaxf(v[0].x, fmaxf(v[1].x, v[2].x))), -1.0f, (float)(frame->width - 1));
+        const int y0 = (int)clamp_to(floorf(fminf(v[0].y, fminf(v[1].y, v[2].y))), 0.0f, (float)(frame->height - 1));
+        const int y1 = (int)clamp_to(ceilf(fmaxf(v[0].y, fmaxf(v[1].y, v[2].y))), -1.0f, (float)(frame->height - 1));
         for (int py = y0; py <= y1; ++py)
             for (int px = x0; px <= x1; ++px)
                 for (int s = 0; s < frame->samples; ++s) {

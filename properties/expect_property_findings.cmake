@@ -1,0 +1,60 @@
+# What the renderer properties find in a plugin (docs/plugins.md, docs/gl.md): run as
+#   cmake -DPROPERTIES=<raster_properties_test> -DPLUGIN=<library or gl> -DEXPECTED=<file> [-DRC_PARAMS=...]
+#         -P expect_property_findings.cmake
+# It runs every renderer property on the plugin and requires what EXPECTED lists, a line each:
+#   fail | Suite.name | text    the property fails on the plugin, its failure saying `text`
+#   pass | Suite.name           the property passes on it
+# so that neither a property that stopped seeing a bug nor one that fails on anything goes unnoticed. Lines
+# starting with # are comments.
+foreach(var PROPERTIES PLUGIN EXPECTED)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "expect_property_findings.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+set(ENV{RASTER_PROPERTIES_PLUGIN} ${PLUGIN})
+if(DEFINED RC_PARAMS)
+  set(ENV{RC_PARAMS} ${RC_PARAMS})
+endif()
+execute_process(COMMAND ${PROPERTIES} --gtest_filter=*/plugin RESULT_VARIABLE status OUTPUT_VARIABLE out
+                ERROR_VARIABLE out TIMEOUT 1200)
+
+file(STRINGS ${EXPECTED} lines REGEX "^(fail|pass) *\\|")
+set(problems "")
+set(failing 0)
+set(passing 0)
+foreach(line IN LISTS lines)
+  string(REGEX MATCH "^(fail|pass) *\\| *([A-Za-z]+\\.[A-Za-z0-9]+) *(\\| *(.*))?$" parsed "${line}")
+  if(NOT parsed)
+    message(FATAL_ERROR "${EXPECTED}: cannot read '${line}'")
+  endif()
+  set(verdict ${CMAKE_MATCH_1})
+  set(name ${CMAKE_MATCH_2})
+  set(says "${CMAKE_MATCH_4}")
+  if(verdict STREQUAL "pass")
+    math(EXPR passing "${passing} + 1")
+    string(FIND "${out}" "[       OK ] ${name}/plugin (" ok)
+    if(ok EQUAL -1)
+      string(APPEND problems "  ${name} did not pass\n")
+    endif()
+    continue()
+  endif()
+  math(EXPR failing "${failing} + 1")
+  string(FIND "${out}" "[  FAILED  ] ${name}/plugin (" failed)
+  if(failed EQUAL -1)
+    string(APPEND problems "  ${name} did not fail\n")
+    continue()
+  endif()
+  # The failure's own report, between its RUN line and its FAILED line.
+  string(FIND "${out}" "[ RUN      ] ${name}/plugin" begin)
+  string(SUBSTRING "${out}" ${begin} -1 rest)
+  string(FIND "${rest}" "[  FAILED  ] ${name}/plugin (" length)
+  string(SUBSTRING "${rest}" 0 ${length} report)
+  string(FIND "${report}" "${says}" found)
+  if(found EQUAL -1)
+    string(APPEND problems "  ${name} failed, but not saying '${says}':\n${report}\n")
+  endif()
+endforeach()
+if(problems)
+  message(FATAL_ERROR "the renderer properties on ${PLUGIN} (exit ${status}), against ${EXPECTED}:\n${problems}")
+endif()
+message(STATUS "${PLUGIN}: ${failing} properties fail as ${EXPECTED} says, ${passing} pass")
