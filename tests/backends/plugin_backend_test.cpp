@@ -6,6 +6,7 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -45,18 +46,25 @@ RenderResult render_with(const Renderer& renderer, const Scene& scene) {
 }
 
 // raster's own stages behind the C interface (properties/raster_stages_plugin.h), on every corpus scene raster
-// draws with its default modes, as it is and with back faces culled (opaque or transparent, lit, shadowed, textured,
-// orthographic, at its own sample count): the same ids, barycentrics and image bytes through the plugin interface as
-// from raster itself. The view depths the host derives from the barycentrics agree to float rounding.
+// draws with its default modes (opaque or transparent, lit, shadowed, textured, orthographic, at its own sample
+// count), as it is, with back faces culled and, with transparency, its meshes reversed: the same ids, barycentrics
+// and image bytes through the plugin interface as from raster itself. The view depths the host derives from the barycentrics agree to float rounding.
 TEST(PluginBackend, rastersOwnStagesBehindTheInterfaceGiveRastersBytes) {
     const plugin::PluginRenderer renderer(properties::raster_stages_plugin());
     for (const auto& entry : std::filesystem::directory_iterator(kScenes))
-        for (const bool cull : {false, true}) {
+        for (const int variant : {0, 1, 2}) {
         Scene scene = load_scene(entry.path());
-        scene.settings.cull_backfaces = scene.settings.cull_backfaces || cull;
+        // 1: back faces culled. 2: the meshes in reverse order, so that a transparent mesh comes before opaque
+        // ones and the plugin's indices into the opaque triangles are no longer the scene's ids.
+        if (variant == 1) scene.settings.cull_backfaces = true;
+        if (variant == 2) {
+            if (!has_transparency(scene)) continue;
+            std::reverse(scene.meshes.begin(), scene.meshes.end());
+        }
         const RenderResult direct = render(scene, RenderOptions{});
         const RenderResult through = render_with(renderer, scene);
-        const std::string name = entry.path().filename().string() + (cull ? " culled" : "");
+        const std::string name =
+            entry.path().filename().string() + (variant == 1 ? " culled" : variant == 2 ? " reversed" : "");
         ASSERT_EQ(through.visibility.triangle, direct.visibility.triangle) << name;
         EXPECT_TRUE(std::memcmp(through.visibility.bary.data(), direct.visibility.bary.data(),
                                 direct.visibility.bary.size() * sizeof(glm::vec3)) == 0)

@@ -1,6 +1,7 @@
 # Fails when a source file has a quoted include that is not a path from the project root into a module folder
 # (raster/<module>/, oracle/<module>/, harness/<module>/, backends/<backend>/, apps/, mutants/, properties/, fuzz/,
-# bench/, tools/, tests/support/), since such an include is found next to the including file and gets around the modules' include views.
+# bench/, tools/, tests/support/), since such an include is found next to the including file and gets around the
+# modules' include views.
 file(GLOB_RECURSE sources RELATIVE ${ROOT}
   ${ROOT}/raster/*.h ${ROOT}/raster/*.cpp ${ROOT}/oracle/*.h ${ROOT}/oracle/*.cpp ${ROOT}/harness/*.h ${ROOT}/harness/*.cpp ${ROOT}/backends/*.h ${ROOT}/backends/*.cpp ${ROOT}/apps/*.h ${ROOT}/apps/*.cpp
   ${ROOT}/properties/*.h ${ROOT}/properties/*.cpp ${ROOT}/fuzz/*.h
