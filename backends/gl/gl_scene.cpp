@@ -42,10 +42,7 @@ std::string unsupported_by_gl(const Scene& scene) {
     if (settings.samples != 1 && settings.samples != 4) add(std::to_string(settings.samples) + " samples (it draws 1 or 4)");
     if (settings.msaa) add("MSAA (raster shades at a pixel's first covered sample, GL at its centre)");
     if (settings.snap_bits != 8) add(std::to_string(settings.snap_bits) + " sub-pixel bits (llvmpipe snaps to 8)");
-    const PrecisionModes exact;
-    const PrecisionModes& modes = settings.modes;
-    if (modes.edges != exact.edges || modes.interpolation != exact.interpolation || modes.depth != exact.depth ||
-        modes.clipping != exact.clipping)
+    if (!exact_precision(settings.modes))
         add("the precision modes (--edges, --interpolation, --depth-format, --clipping)");
     // Reversed-Z depth at view depth v is near (far - v) / (v (far - near)): about near / v, and smallest just short
     // of the far plane, where far - v is at least a float step of far (2^-24 far), so about 2^-24 near / far. Below

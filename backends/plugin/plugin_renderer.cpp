@@ -61,10 +61,7 @@ void PluginBackend::draw_depth(const FrameParams& frame, RenderWorkspace& worksp
 void PluginRenderer::render_into(const Scene& scene, const RenderOptions& options, RenderResult& result) const {
     // The precision modes are raster's own, and they set what the comparison judges: a plugin, which is told none of
     // them, is judged under the exact ones.
-    const PrecisionModes exact;
-    const PrecisionModes& modes = scene.settings.modes;
-    if (modes.edges != exact.edges || modes.interpolation != exact.interpolation || modes.depth != exact.depth ||
-        modes.clipping != exact.clipping)
+    if (!exact_precision(scene.settings.modes))
         throw InputError("the plugin backend runs a plugin under the exact precision modes only (no --edges, "
                          "--interpolation, --depth-format or --clipping): they are raster's own, and they would "
                          "leave classes of the plugin's samples unjudged");

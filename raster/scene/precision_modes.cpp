@@ -59,4 +59,10 @@ std::string interpolation_names() { return names(kInterpolationNames); }
 std::string depth_format_names() { return names(kDepthNames); }
 std::string clipping_names() { return names(kClippingNames); }
 
+bool exact_precision(const PrecisionModes& modes) {
+    const PrecisionModes exact;
+    return modes.edges == exact.edges && modes.interpolation == exact.interpolation && modes.depth == exact.depth &&
+           modes.clipping == exact.clipping;
+}
+
 }  // namespace raster

@@ -32,6 +32,10 @@ struct PrecisionModes {
     bool hierarchical_z = true;  // per-block farthest-depth culling in the tiled renderer (never changes a pixel)
 };
 
+// Whether edges, interpolation, depth and clipping are at their exact defaults (hierarchical Z, which never changes
+// a pixel, is not read): what another rasterizer (the GL backend, a plugin), told none of raster's modes, runs under.
+bool exact_precision(const PrecisionModes& modes);
+
 const char* to_string(EdgeArithmetic v);  // "fixed" | "float"
 const char* to_string(Interpolation v);   // "perspective" | "affine"
 const char* to_string(DepthFormat v);     // "reversed-z" | "float" | "fixed24"
