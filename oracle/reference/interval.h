@@ -36,11 +36,11 @@ inline Interval operator+(Interval a, Interval b) { return {a.lo + b.lo, a.hi + 
 inline Interval operator-(Interval a, Interval b) { return {a.lo - b.hi, a.hi - b.lo}; }
 inline Interval operator-(Interval a) { return {-a.hi, -a.lo}; }
 inline Interval operator*(Interval a, Interval b) {
-    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    const double p0 = a.lo * b.lo, p1 = a.lo * b.hi, p2 = a.hi * b.lo, p3 = a.hi * b.hi;
     // 0 * inf is NaN: an unbounded operand times one that may be 0 is unbounded.
-    for (double v : p)
-        if (std::isnan(v)) return Interval::everything();
-    return {*std::min_element(p, p + 4), *std::max_element(p, p + 4)};
+    if (std::isnan(p0) || std::isnan(p1) || std::isnan(p2) || std::isnan(p3)) return Interval::everything();
+    // The first smallest and the first largest in the order above (as a scan would pick among equal zeros).
+    return {std::min(std::min(p0, p1), std::min(p2, p3)), std::max(std::max(p0, p1), std::max(p2, p3))};
 }
 // Division by an interval that contains 0 is unbounded.
 inline Interval operator/(Interval a, Interval b) {

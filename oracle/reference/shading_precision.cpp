@@ -122,31 +122,4 @@ double raster_averaged_normal_error(const std::vector<glm::dvec3>& world, const 
     return unit_vector_error(change, glm::length(sum));
 }
 
-Interval3 float_interpolate(const Interval3& bary, const Interval3 values[3]) {
-    Interval3 out = bary.x * values[0] + bary.y * values[1] + bary.z * values[2];
-    for (int c = 0; c < 3; ++c) {
-        double magnitude = 0.0;
-        for (int i = 0; i < 3; ++i) magnitude += bary[i].magnitude() * values[i][c].magnitude();
-        out[c] = out[c].widened(float_gamma(kInterpolationRoundings) * magnitude);
-    }
-    return out;
-}
-
-Interval after_roundings(Interval value, int k) { return value.widened(float_gamma(k) * value.magnitude()); }
-
-Interval3 after_roundings(const Interval3& value, int k) {
-    return {after_roundings(value.x, k), after_roundings(value.y, k), after_roundings(value.z, k)};
-}
-
-ByteRange byte_range(Interval linear) {
-    const double slack = float_gamma(kByteRoundings) * 255.5 / 255.0;
-    return {exact_byte(linear.lo - slack), exact_byte(linear.hi + slack)};
-}
-
-int exact_byte(double linear) {
-    if (!(linear > 0.0)) return 0;
-    if (linear >= 1.0) return 255;
-    return static_cast<int>(std::floor(linear * 255.0 + 0.5));
-}
-
 }  // namespace raster::oracle

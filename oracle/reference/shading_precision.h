@@ -10,6 +10,7 @@
 
 #include "oracle/reference/interval.h"
 #include "oracle/reference/model_precision.h"
+#include "oracle/reference/precision.h"
 #include "raster/scene/mesh.h"
 
 namespace raster::oracle {
@@ -81,11 +82,22 @@ inline constexpr int kGoochBlendRoundings = 3;
 inline constexpr int kGoochToneRoundings = 5;
 
 // raster's interpolation sum_i b_i v_i over boxes: gamma_3 of sum_i |b_i| |v_i| per component.
-Interval3 float_interpolate(const Interval3& bary, const Interval3 values[3]);
+// Inline, as the few helpers below: the oracle's shading calls them a few hundred times per sample.
+inline Interval3 float_interpolate(const Interval3& bary, const Interval3 values[3]) {
+    Interval3 out = bary.x * values[0] + bary.y * values[1] + bary.z * values[2];
+    for (int c = 0; c < 3; ++c) {
+        double magnitude = 0.0;
+        for (int i = 0; i < 3; ++i) magnitude += bary[i].magnitude() * values[i][c].magnitude();
+        out[c] = out[c].widened(float_gamma(kInterpolationRoundings) * magnitude);
+    }
+    return out;
+}
 
 // `value` widened by k float roundings relative to its own magnitude.
-Interval after_roundings(Interval value, int k);
-Interval3 after_roundings(const Interval3& value, int k);
+inline Interval after_roundings(Interval value, int k) { return value.widened(float_gamma(k) * value.magnitude()); }
+inline Interval3 after_roundings(const Interval3& value, int k) {
+    return {after_roundings(value.x, k), after_roundings(value.y, k), after_roundings(value.z, k)};
+}
 
 // BYTES. raster writes a linear value v as floor(clamp(v, 0, 1) 255 + 0.5), evaluated in float (the product and
 // the sum round: gamma_2 relative to 255.5); the oracle maps an interval [lo, hi], widened by that, through the same
@@ -96,8 +108,15 @@ struct ByteRange {
     int lo = 0, hi = 0;
     bool contains(int byte) const { return lo <= byte && byte <= hi; }
 };
-ByteRange byte_range(Interval linear);
 // The byte of an exact value (the oracle's own image): the same formula in double.
-int exact_byte(double linear);
+inline int exact_byte(double linear) {
+    if (!(linear > 0.0)) return 0;
+    if (linear >= 1.0) return 255;
+    return static_cast<int>(std::floor(linear * 255.0 + 0.5));
+}
+inline ByteRange byte_range(Interval linear) {
+    const double slack = float_gamma(kByteRoundings) * 255.5 / 255.0;
+    return {exact_byte(linear.lo - slack), exact_byte(linear.hi + slack)};
+}
 
 }  // namespace raster::oracle
