@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bandwidth_floor.h"
 #include "bench/bench_scenes.h"
 #include "bench/benchmark_flags.h"
 #include "bench/peer_benchmarks.h"
@@ -50,6 +51,12 @@ int main(int argc, char** argv) {
                 ->Unit(benchmark::kMillisecond)
                 ->MeasureProcessCPUTime()
                 ->UseRealTime();
+
+    for (const auto& s : scenes)
+        benchmark::RegisterBenchmark(floor_name(*s).c_str(), bm_bandwidth_floor, s.get())
+            ->Unit(benchmark::kMillisecond)
+            ->MeasureProcessCPUTime()
+            ->UseRealTime();
 
     for (const auto& s : scenes)
         benchmark::RegisterBenchmark(oracle_name(*s).c_str(), bm_oracle, s.get())
