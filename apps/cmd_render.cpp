@@ -72,6 +72,7 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
             {"depth_format", to_string(scene.settings.modes.depth)},
             {"clipping", to_string(scene.settings.modes.clipping)},
             {"hierarchical_z", scene.settings.modes.hierarchical_z},
+            {"resolution_divisor", scene.settings.resolution_divisor},
             {"triangles", stats.triangles},
             {"clipped", stats.clipped},
             {"rasterized", stats.rasterized},
@@ -85,6 +86,7 @@ nlohmann::json stats_json(const Scene& scene, const RenderStats& stats) {
             {"ms_raster", stats.ms_raster},
             {"ms_shade", stats.ms_shade},
             {"ms_transparency", stats.ms_transparency},
+            {"ms_upscale", stats.ms_upscale},
             {"ms_total", stats.ms_total}};
 }
 

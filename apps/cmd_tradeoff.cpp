@@ -107,9 +107,10 @@ void print_scene(const harness::SceneTradeoff& scene, int reference_grid, std::o
                   "ambiguous", "RMSE", "coverage", "front");
     out << line;
     for (const harness::ModeResult& m : scene.modes) {
-        std::snprintf(line, sizeof line, "  %-18s %10.2f %10llu %10llu %8.3f %10.5f  %s\n", m.mode.c_str(), m.median_ms,
-                      static_cast<unsigned long long>(m.genuine), static_cast<unsigned long long>(m.ambiguous),
-                      m.color_rmse, m.coverage_error, m.on_front ? "*" : "");
+        auto count = [&](uint64_t value) { return m.compared ? std::to_string(value) : std::string("-"); };
+        std::snprintf(line, sizeof line, "  %-18s %10.2f %10s %10s %8.3f %10.5f  %s\n", m.mode.c_str(), m.median_ms,
+                      count(m.genuine).c_str(), count(m.ambiguous).c_str(), m.color_rmse, m.coverage_error,
+                      m.on_front ? "*" : "");
         out << line;
     }
 }

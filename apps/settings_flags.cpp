@@ -42,6 +42,10 @@ void register_settings_flags(CLI::App& command, SettingsFlags& flags) {
     command.add_option("--hierarchical-z", flags.hierarchical_z,
                        "Hierarchical-Z occlusion culling: on (default) or off; never changes a pixel")
         ->check(CLI::IsMember({"on", "off"}));
+    command.add_option("--resolution-divisor", flags.resolution_divisor,
+                       "Render at width/N x height/N and stretch the image back bilinearly: 1 (default), 2 or 4 (N "
+                       "must divide the image size; no depth image; compare refuses it, the trade-off measures it)")
+        ->check(CLI::IsMember({1, 2, 4}));
     command.add_flag("--shadows", flags.shadows, "Every point and spot light casts shadows (through a cube shadow map; directional lights cast none)");
     command.add_option("--shadow-resolution", flags.shadow_resolution,
                        "Shadow map texels per side of each cube face, 16..8192 (default 1024)")
@@ -102,6 +106,7 @@ void apply_settings_flags(const SettingsFlags& flags, Scene& scene) {
     if (flags.depth_format) parse_depth_format(*flags.depth_format, settings.modes.depth);
     if (flags.clipping) parse_clipping(*flags.clipping, settings.modes.clipping);
     if (flags.hierarchical_z) settings.modes.hierarchical_z = *flags.hierarchical_z == "on";
+    if (flags.resolution_divisor) settings.resolution_divisor = *flags.resolution_divisor;
     if (flags.shadows) set_shadow_casting(scene, true);
     if (flags.shadow_resolution) settings.shadows.resolution = *flags.shadow_resolution;
     if (flags.shadow_bias) settings.shadows.bias = *flags.shadow_bias;

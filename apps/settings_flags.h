@@ -22,6 +22,7 @@ struct SettingsFlags {
     std::optional<int> snap_bits;
     std::optional<std::string> cull;
     std::optional<std::string> edges, interpolation, depth_format, clipping, hierarchical_z;
+    std::optional<int> resolution_divisor;  // 1, 2 or 4
     bool shadows = false;  // every light casts shadows
     std::optional<int> shadow_resolution, pcf;
     std::optional<float> shadow_bias, shadow_slope_bias;

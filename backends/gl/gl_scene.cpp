@@ -44,6 +44,7 @@ std::string unsupported_by_gl(const Scene& scene) {
     if (settings.snap_bits != 8) add(std::to_string(settings.snap_bits) + " sub-pixel bits (llvmpipe snaps to 8)");
     if (!exact_precision(settings.modes))
         add("the precision modes (--edges, --interpolation, --depth-format, --clipping)");
+    if (settings.resolution_divisor != 1) add("a reduced resolution (--resolution-divisor)");
     // Reversed-Z depth at view depth v is near (far - v) / (v (far - near)): about near / v, and smallest just short
     // of the far plane, where far - v is at least a float step of far (2^-24 far), so about 2^-24 near / far. Below
     // 2^-126 it is subnormal, and llvmpipe flushes subnormal depth to 0, the cleared far value, which GL_GREATER
@@ -66,6 +67,7 @@ Scene gl_drawable(Scene scene) {
     settings.msaa = false;
     settings.snap_bits = 8;
     settings.modes = PrecisionModes{};
+    settings.resolution_divisor = 1;
     for (SceneMesh& mesh : scene.meshes)
         for_each_material(mesh, [](Material& material) {
             material.texture.reset();

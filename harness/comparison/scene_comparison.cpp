@@ -178,6 +178,10 @@ uint64_t comparison_bytes(const RenderSettings& settings) {
 
 std::string comparison_problem(const Scene& scene) {
     const RenderSettings& settings = scene.settings;
+    if (settings.resolution_divisor > 1)
+        return "a frame at resolution divisor " + std::to_string(settings.resolution_divisor) +
+               " is not compared: the oracle judges frames sample by sample at their own size, and this one's "
+               "samples are not the image's; `raster tradeoff` measures it against the 64-sample reference";
     const uint64_t bytes = comparison_bytes(settings);
     if (bytes <= kMaxFrameBytes) return "";
     return "comparing a " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " image with " +

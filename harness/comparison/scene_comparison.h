@@ -37,7 +37,7 @@ struct ComparisonOptions {
 // sample), the oracle's sample buffer (20) and the classes (1) per sample; per pixel the images, the decoded files
 // and the colour bounds (about 50). compare_scene refuses frames above kMaxFrameBytes (comparison_problem).
 uint64_t comparison_bytes(const RenderSettings& settings);
-// Empty when a comparison of the scene fits the cap, else what is wrong.
+// Empty when a comparison of the scene fits the cap and its frame is at resolution divisor 1, else what is wrong.
 std::string comparison_problem(const Scene& scene);
 
 // Renders and compares. The scene must be valid (scene/validation.h) and fit the comparison's memory cap

@@ -155,9 +155,11 @@ std::string panel(const SceneTradeoff& scene, int reference_grid, double top) {
     for (const ModeResult& m : scene.modes) {
         const double x = px(m.median_ms), y = py(m.color_rmse);
         char tip[256];
-        std::snprintf(tip, sizeof tip, "%s: %s ms, RMSE %.3g, coverage error %.3g, genuine %llu, ambiguous %llu",
-                      m.mode.c_str(), milliseconds(m.median_ms).c_str(), m.color_rmse, m.coverage_error,
-                      static_cast<unsigned long long>(m.genuine), static_cast<unsigned long long>(m.ambiguous));
+        const std::string counts = m.compared ? "genuine " + std::to_string(m.genuine) + ", ambiguous " +
+                                                    std::to_string(m.ambiguous)
+                                              : std::string("not compared sample by sample");
+        std::snprintf(tip, sizeof tip, "%s: %s ms, RMSE %.3g, coverage error %.3g, %s", m.mode.c_str(),
+                      milliseconds(m.median_ms).c_str(), m.color_rmse, m.coverage_error, counts.c_str());
         svg += "<circle class=\"" + std::string(m.on_front ? "mode on-front" : "mode") + "\" data-mode=\"" +
                escape_xml(m.mode) + "\" cx=\"" + num(x) + "\" cy=\"" + num(y) + "\" r=\"4\" fill=\"" +
                (m.on_front ? "#d62728" : "#888") + "\"><title>" + escape_xml(tip) + "</title></circle>\n";

@@ -223,17 +223,31 @@ SceneTradeoff measure_scene(const Scene& scene, const std::vector<const Tradeoff
         result.mode = modes[i]->name;
         result.description = modes[i]->description;
         result.settings = work.settings;
-        {
+        if (work.settings.resolution_divisor == 1) {
             Comparison comparison = compare_scene(work, compare_options);
             result.samples = uint64_t(comparison.width) * uint64_t(comparison.height) * uint64_t(comparison.samples);
             result.genuine = comparison.disagreements_total();
             result.ambiguous = comparison.visibility.counts.ambiguous_total();
             result.color_rmse = color_rmse(comparison.raster.image, reference);
             images[i] = std::move(comparison.raster.image.pixels);
+        } else {  // not comparable sample by sample (comparison_problem): the image alone
+            RenderOptions render_options;
+            render_options.threads = options.threads;
+            render_options.keep_visibility = false;
+            RenderResult frame = render(work, render_options);
+            result.compared = false;
+            result.samples = frame.stats.samples;
+            result.color_rmse = color_rmse(frame.image, reference);
+            images[i] = std::move(frame.image.pixels);
         }
-        const TransformedScene geometry = run_vertex_stage(work, vertex_stage_needs(work.settings.shading));
-        result.coverage_error =
-            coverage_error(covered_sample_counts(work, geometry, options.threads), work.settings.samples, areas);
+        // Coverage at the resolution the frame rasterizes at: each internal sample stands for d^2 output ones.
+        Scene internal = work;
+        internal.settings = internal_frame_settings(work.settings);
+        const TransformedScene geometry = run_vertex_stage(internal, vertex_stage_needs(internal.settings.shading));
+        std::vector<uint64_t> covered = covered_sample_counts(internal, geometry, options.threads);
+        const uint64_t area_per_sample = uint64_t(work.settings.resolution_divisor) * work.settings.resolution_divisor;
+        for (uint64_t& count : covered) count *= area_per_sample;
+        result.coverage_error = coverage_error(covered, work.settings.samples, areas);
         out.modes.push_back(std::move(result));
     }
 
@@ -282,8 +296,8 @@ nlohmann::json tradeoff_json(const std::vector<SceneTradeoff>& scenes, const Tra
                              {"median_ms", m.median_ms},
                              {"times_ms", m.times_ms},
                              {"samples", m.samples},
-                             {"genuine", m.genuine},
-                             {"ambiguous", m.ambiguous},
+                             {"genuine", m.compared ? nlohmann::json(m.genuine) : nlohmann::json(nullptr)},
+                             {"ambiguous", m.compared ? nlohmann::json(m.ambiguous) : nlohmann::json(nullptr)},
                              {"color_rmse", m.color_rmse},
                              {"coverage_error", std::isfinite(m.coverage_error) ? nlohmann::json(m.coverage_error)
                                                                                 : nlohmann::json(nullptr)},
@@ -317,7 +331,7 @@ nlohmann::json tradeoff_json(const std::vector<SceneTradeoff>& scenes, const Tra
 std::string tradeoff_csv(const std::vector<SceneTradeoff>& scenes) {
     std::string csv =
         "scene,mode,shading,snap_bits,edges,samples_per_pixel,pattern,msaa,interpolation,depth,clipping,"
-        "hierarchical_z,median_ms,samples,genuine,ambiguous,color_rmse,coverage_error,on_front\n";
+        "hierarchical_z,resolution_divisor,median_ms,samples,genuine,ambiguous,color_rmse,coverage_error,on_front\n";
     for (const SceneTradeoff& scene : scenes)
         for (const ModeResult& m : scene.modes) {
             const RenderSettings& s = m.settings;
@@ -325,8 +339,9 @@ std::string tradeoff_csv(const std::vector<SceneTradeoff>& scenes) {
                    std::to_string(s.snap_bits) + "," + to_string(s.modes.edges) + "," + std::to_string(s.samples) +
                    "," + to_string(s.pattern) + "," + (s.msaa ? "1" : "0") + "," + to_string(s.modes.interpolation) + "," + to_string(s.modes.depth) +
                    "," + to_string(s.modes.clipping) + "," + (s.modes.hierarchical_z ? "1" : "0") + "," +
-                   format("%.3f", m.median_ms) + "," + std::to_string(m.samples) + "," + std::to_string(m.genuine) +
-                   "," + std::to_string(m.ambiguous) + "," + format("%.4f", m.color_rmse) + "," +
+                   std::to_string(s.resolution_divisor) + "," + format("%.3f", m.median_ms) + "," +
+                   std::to_string(m.samples) + "," + (m.compared ? std::to_string(m.genuine) : "") + "," +
+                   (m.compared ? std::to_string(m.ambiguous) : "") + "," + format("%.4f", m.color_rmse) + "," +
                    format("%.6f", m.coverage_error) + "," + (m.on_front ? "1" : "0") + "\n";
         }
     return csv;

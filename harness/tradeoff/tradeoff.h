@@ -36,6 +36,9 @@ struct ModeResult {
     double median_ms = 0;
     uint64_t samples = 0;                 // width * height * samples per pixel: what genuine and ambiguous count
     uint64_t genuine = 0, ambiguous = 0;  // compare_scene's totals for the scene in this mode (genuine: judged or not)
+    // False for a mode at a resolution divisor above 1, which compare_scene refuses: genuine and ambiguous are not
+    // measured (JSON null, CSV empty); its RMSE and coverage error are.
+    bool compared = true;
     double color_rmse = 0;                // 0-255, RGB, every pixel, against the reference oracle image
     double coverage_error = 0;            // see coverage_error()
     bool timed_image_matches = true;      // the timed frame's image is the compared one, byte for byte

@@ -35,13 +35,19 @@ TradeoffMode lighting_rate(ShadingMode cheaper, std::string name, std::string de
             ModeNeeds::per_sample_lighting};
 }
 
+// The divisor where it divides the image size, else native resolution (a mode never makes a scene invalid).
+void set_resolution_divisor(RenderSettings& s, int divisor) {
+    s.resolution_divisor = s.width % divisor == 0 && s.height % divisor == 0 ? divisor : 1;
+}
+
 // A preset: every axis set at once, whatever the scene asked for (shadow maps: resolution and filter; the bias is
 // the scene's; transparency: the mode).
 TradeoffMode preset(std::string name, std::string description, int snap_bits, int samples, SamplePattern pattern,
                     bool msaa, PrecisionModes precision, int shadow_resolution, int pcf, TransparencyMode transparency,
-                    bool lit_per_vertex = false) {
+                    bool lit_per_vertex = false, int resolution_divisor = 1) {
     return {std::move(name), std::move(description), [=](RenderSettings& s) {
                 if (lit_per_vertex && lit_per_sample(s.shading)) s.shading = ShadingMode::gouraud;
+                set_resolution_divisor(s, resolution_divisor);
                 s.snap_bits = snap_bits;
                 s.samples = samples;
                 s.pattern = pattern;
@@ -119,6 +125,10 @@ std::vector<TradeoffMode> make_catalogue() {
                                   "Phong and Blinn-Phong lit once per vertex, the colours interpolated (Gouraud)"));
     modes.push_back(lighting_rate(ShadingMode::flat, "shading-flat",
                                   "Phong and Blinn-Phong lit once per triangle, at its centroid (flat)"));
+    modes.push_back({"half-resolution",
+                     "rendered at half the width and height, the image stretched back bilinearly (when 2 divides "
+                     "the size)",
+                     [](RenderSettings& s) { set_resolution_divisor(s, 2); }});
     modes.push_back(filter(TextureFilter::nearest, "every texture nearest-sampled at level 0 (no mipmaps)"));
     modes.push_back(filter(TextureFilter::bilinear, "every texture bilinear at level 0 (no mipmaps)"));
     modes.push_back(filter(TextureFilter::trilinear, "every texture trilinear: bilinear in two mip levels, blended"));
@@ -135,12 +145,12 @@ std::vector<TradeoffMode> make_catalogue() {
     // Only choices that buy time: the precision axes a cheap setting of which is no faster here (4 sub-pixel bits,
     // float edges, affine interpolation, fixed24 or float depth, the guard band) stay at their accurate values.
     modes.push_back(preset("fastest",
-                           "1 sample, Gouraud lighting, 512 shadow texels, no PCF, weighted transparency; 8 bits, "
-                           "fixed edges, perspective, reversed-Z, full clipping",
+                           "half resolution, 1 sample, Gouraud lighting, 512 shadow texels, no PCF, weighted "
+                           "transparency; 8 bits, fixed edges, perspective, reversed-Z, full clipping",
                            8, 1, SamplePattern::standard, false,
                            {EdgeArithmetic::fixed, Interpolation::perspective, DepthFormat::reversed_z,
                             Clipping::full, true},
-                           512, 1, TransparencyMode::weighted, /*lit_per_vertex=*/true));
+                           512, 1, TransparencyMode::weighted, /*lit_per_vertex=*/true, /*resolution_divisor=*/2));
     modes.push_back(preset("balanced",
                            "8 bits, fixed edges, 4 samples MSAA, perspective, reversed-Z, full clipping, 1024 "
                            "shadow texels, 3x3 PCF",
@@ -189,7 +199,8 @@ bool same_mode_settings(const RenderSettings& a, const RenderSettings& b) {
            a.shadows.pcf == b.shadows.pcf && a.transparency.mode == b.transparency.mode &&
            a.modes.edges == b.modes.edges && a.modes.interpolation == b.modes.interpolation &&
            a.modes.depth == b.modes.depth && a.modes.clipping == b.modes.clipping &&
-           a.modes.hierarchical_z == b.modes.hierarchical_z && a.shading == b.shading;
+           a.modes.hierarchical_z == b.modes.hierarchical_z && a.shading == b.shading &&
+           a.resolution_divisor == b.resolution_divisor;
 }
 
 SceneFeatures scene_features(const Scene& scene) {
@@ -232,7 +243,8 @@ nlohmann::json mode_settings_json(const RenderSettings& s) {
               {"bias", s.shadows.bias},
               {"slope_bias", s.shadows.slope_bias},
               {"pcf", s.shadows.pcf}}},
-            {"transparency", to_string(s.transparency.mode)}};
+            {"transparency", to_string(s.transparency.mode)},
+            {"resolution_divisor", s.resolution_divisor}};
 }
 
 }  // namespace raster::harness

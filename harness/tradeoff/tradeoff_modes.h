@@ -1,6 +1,6 @@
 // The speed/accuracy modes `raster tradeoff` sweeps: each a stable short name for one change to a scene's render
 // settings (sub-pixel bits, edge arithmetic, samples and pattern, MSAA, interpolation, depth format, clipping,
-// hierarchical Z, lighting rate, texture filter, shadow map resolution, bias and filter, transparency), or a named
+// hierarchical Z, lighting rate, resolution, texture filter, shadow map resolution, bias and filter, transparency), or a named
 // preset that sets all of them. A cheap setting is a mode only when it is faster: 4 sub-pixel bits, float edges,
 // affine interpolation, float or fixed24 depth and the guard band measure no faster than their accurate values, so
 // they remain render settings (for the accuracy they lose) but not trade-off modes.
@@ -51,7 +51,7 @@ std::string tradeoff_mode_names();
 RenderSettings apply_mode(const TradeoffMode& mode, RenderSettings baseline);
 
 // True when a and b agree on every field a mode can change (shading, snap bits, samples, pattern, MSAA,
-// PrecisionModes, texture filter, shadow settings).
+// PrecisionModes, texture filter, shadow settings, transparency, resolution divisor).
 bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
 
 // The default sweep for a scene: every mode in catalogue order, leaving out each whose settings equal those of a
@@ -60,7 +60,7 @@ bool same_mode_settings(const RenderSettings& a, const RenderSettings& b);
 std::vector<const TradeoffMode*> default_sweep(const RenderSettings& baseline, const SceneFeatures& features = {});
 
 // {shading, snap_bits, edges, samples, pattern, msaa, interpolation, depth, clipping, hierarchical_z, texture_filter,
-//  shadows: {resolution, bias, slope_bias, pcf}, transparency}
+//  shadows: {resolution, bias, slope_bias, pcf}, transparency, resolution_divisor}
 nlohmann::json mode_settings_json(const RenderSettings& settings);
 
 }  // namespace raster::harness

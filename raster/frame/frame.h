@@ -40,6 +40,7 @@ struct RenderStats {
     double ms_vertex = 0, ms_setup = 0, ms_raster = 0, ms_shade = 0, ms_total = 0;
     double ms_shadow = 0;  // rendering the shadow maps (their own vertex, setup and raster work), 0 without shadows
     double ms_transparency = 0;     // the transparency pass, 0 in an opaque scene
+    double ms_upscale = 0;          // a reduced-resolution frame's upscale to the output size, 0 at resolution 1
     size_t transparent_fragments = 0;  // transparent fragments in front of the opaque surfaces
 };
 
@@ -49,6 +50,9 @@ struct RenderWorkspace {
     FrontEndSetups front_end;
     std::vector<TriangleSetup> setups;  // the reference renderer's: the front end's chunks concatenated
     std::vector<BinGroup> tile_bins;    // the tiled renderer's tile lists (tile_bins.h)
+    // A reduced-resolution frame's (RenderSettings::resolution_divisor): its internal image and the upscale's rows.
+    Image internal_image;
+    std::vector<uint16_t> upscale_rows;
 };
 
 struct RenderResult {

@@ -1,5 +1,8 @@
-// The frame's order: front end, shadow pass, the backend's opaque raster and resolve, transparency; each timed.
+// The frame's order: front end, shadow pass, the backend's opaque raster and resolve, transparency; each timed;
+// and a reduced-resolution frame's upscale.
 #include "raster/frame/render.h"
+
+#include <utility>
 
 #include "raster/core/stopwatch.h"
 #include "raster/geometry/front_end.h"
@@ -9,6 +12,7 @@
 #include "raster/frame/shadow_pass.h"
 #include "raster/frame/tiled_renderer.h"
 #include "raster/resolve/transparency.h"
+#include "raster/resolve/upscale.h"
 #include "raster/geometry/vertex_stage.h"
 
 namespace raster {
@@ -22,17 +26,9 @@ ResolveParams resolve_params_for(const Scene& scene, const RenderOptions& option
     return params;
 }
 
-}  // namespace
-
-const RasterBackend& raster_backend(RasterPath path, bool allow_simd) {
-    static const TiledBackend simd(true), scalar(false);
-    static const ReferenceBackend reference;
-    if (path == RasterPath::reference) return reference;
-    return allow_simd ? static_cast<const RasterBackend&>(simd) : scalar;
-}
-
-void render_frame(const Scene& scene, const RenderOptions& options, const RasterBackend& backend,
-                  RenderResult& result) {
+// The frame at the scene's own size: every stage, timed into result.stats.
+void render_native(const Scene& scene, const RenderOptions& options, const RasterBackend& backend,
+                   RenderResult& result) {
     const auto start = Clock::now();
     const RenderSettings& settings = scene.settings;
     RenderStats& stats = result.stats = RenderStats{};
@@ -90,6 +86,33 @@ void render_frame(const Scene& scene, const RenderOptions& options, const Raster
         stats.ms_transparency = milliseconds_since(stage_start);
     }
     stats.ms_total = milliseconds_since(start);
+}
+
+}  // namespace
+
+const RasterBackend& raster_backend(RasterPath path, bool allow_simd) {
+    static const TiledBackend simd(true), scalar(false);
+    static const ReferenceBackend reference;
+    if (path == RasterPath::reference) return reference;
+    return allow_simd ? static_cast<const RasterBackend&>(simd) : scalar;
+}
+
+void render_frame(const Scene& scene, const RenderOptions& options, const RasterBackend& backend,
+                  RenderResult& result) {
+    const int divisor = scene.settings.resolution_divisor;
+    if (divisor == 1) return render_native(scene, options, backend, result);
+    // Reduced resolution: the whole frame at width/d x height/d (its visibility buffer stays at that size), then
+    // its image stretched to the output size.
+    const auto start = Clock::now();
+    Scene internal = scene;
+    internal.settings = internal_frame_settings(scene.settings);
+    render_native(internal, options, backend, result);
+    const auto upscale_start = Clock::now();
+    RenderWorkspace& workspace = result.workspace;
+    std::swap(result.image, workspace.internal_image);
+    upscale_image(workspace.internal_image, divisor, options.threads, workspace.upscale_rows, result.image);
+    result.stats.ms_upscale = milliseconds_since(upscale_start);
+    result.stats.ms_total = milliseconds_since(start);
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& options) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "raster/core/errors.h"
 #include "raster/core/stopwatch.h"
 #include "raster/image/image.h"
 #include "raster/resolve/depth_image.h"
@@ -14,6 +15,9 @@ void run_render_job(const Scene& scene, const RenderJob& job, const Renderer& re
                                    [](const FrameOutput& o) { return o.kind == OutputKind::depth; });
     if (depth && !renderer.gives_visibility())
         throw std::invalid_argument(renderer.name() + " gives no visibility buffer, so no depth image");
+    if (depth && scene.settings.resolution_divisor > 1)
+        throw InputError("no depth image at resolution divisor " + std::to_string(scene.settings.resolution_divisor) +
+                         ": the depth buffer is the internal frame's, smaller than the image");
     RenderOptions options = job.options;
     options.keep_visibility = depth || job.keep_visibility;  // the full-frame sample planes, only if read
     out.frame_ms.clear();

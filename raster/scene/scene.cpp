@@ -132,4 +132,13 @@ size_t triangle_count(const Scene& scene) {
     return total;
 }
 
+bool valid_resolution_divisor(int divisor) { return divisor == 1 || divisor == 2 || divisor == 4; }
+
+RenderSettings internal_frame_settings(RenderSettings settings) {
+    settings.width /= settings.resolution_divisor;
+    settings.height /= settings.resolution_divisor;
+    settings.resolution_divisor = 1;
+    return settings;
+}
+
 }  // namespace raster

@@ -170,7 +170,17 @@ struct RenderSettings {
     std::optional<TextureFilter> texture_filter;
     ShadowSettings shadows;  // read only when a light casts shadows
     TransparencySettings transparency;  // read only when a material is blended (is_blended)
+    // 1: the frame is rendered at width x height. 2 or 4: at width/d x height/d (which d must divide), every stage
+    // at that internal resolution, then the image is stretched back bilinearly (resolve/upscale.h): the
+    // trade-off's cheapest mode. Not in the scene formats: --resolution-divisor and `raster tradeoff` set it.
+    int resolution_divisor = 1;
 };
+
+// The resolution divisors a frame may use: 1 (native), 2 and 4.
+bool valid_resolution_divisor(int divisor);
+// The settings of the frame a reduced-resolution render draws: width/d x height/d at divisor 1 (`settings` itself
+// at divisor 1).
+RenderSettings internal_frame_settings(RenderSettings settings);
 
 struct SceneAnimation;  // raster/scene/animation.h
 

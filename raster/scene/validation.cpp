@@ -77,6 +77,11 @@ std::string settings_problem(const RenderSettings& s) {
         return "image size " + std::to_string(s.width) + "x" + std::to_string(s.height) + " is outside 1.." +
                std::to_string(kMaxImageDimension) + " per side";
     if (std::string error = sample_count_error(s.samples, s.pattern); !error.empty()) return error;
+    if (!valid_resolution_divisor(s.resolution_divisor))
+        return "resolution divisor must be 1, 2 or 4, got " + std::to_string(s.resolution_divisor);
+    if (s.width % s.resolution_divisor != 0 || s.height % s.resolution_divisor != 0)
+        return "resolution divisor " + std::to_string(s.resolution_divisor) + " must divide the image size " +
+               std::to_string(s.width) + "x" + std::to_string(s.height);
     if (frame_bytes(s) > kMaxFrameBytes)
         return "a " + std::to_string(s.width) + "x" + std::to_string(s.height) + " image with " +
                std::to_string(s.samples) + " samples needs " + std::to_string(frame_bytes(s) >> 20) +

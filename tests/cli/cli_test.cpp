@@ -357,6 +357,32 @@ TEST(Cli, samplesInvalidForPatternExitsTwo) {
     expect_bad_input(ws, run_raster(ws, {"render", scene.string(), "-o", image, "--samples", "many"}), {"many"});
 }
 
+// --resolution-divisor: the image keeps its size, the frame's samples are the internal ones; a divisor that is not
+// 1, 2 or 4 or does not divide the size, a depth image, and a comparison are clear errors.
+TEST(Cli, aReducedResolutionKeepsTheImageSizeAndRefusesWhatItCannotGive) {
+    Workspace ws;
+    const fs::path scene = ws.write_scene("scene.yaml", kScene);  // 40 x 30
+    const std::string image = (ws.out() / "img.png").string();
+    const Result halved = run_raster(ws, {"render", scene.string(), "-o", image, "--resolution-divisor", "2", "--stats"});
+    ASSERT_EQ(halved.status, 0) << halved.err;
+    const nlohmann::json stats = nlohmann::json::parse(halved.out);
+    EXPECT_EQ(stats["resolution_divisor"], 2);
+    EXPECT_EQ(stats["samples"].get<int>(), 20 * 15);
+    EXPECT_GE(stats["ms_upscale"].get<double>(), 0.0);
+    const std::string png = read_bytes(image);
+    EXPECT_EQ(big_endian_u32(png, 16), 40u);  // IHDR width and height
+    EXPECT_EQ(big_endian_u32(png, 20), 30u);
+    fs::remove(image);
+    expect_bad_input(ws, run_raster(ws, {"render", scene.string(), "-o", image, "--resolution-divisor", "3"}), {"3"});
+    expect_bad_input(ws, run_raster(ws, {"render", scene.string(), "-o", image, "--resolution-divisor", "4"}),
+                     {"resolution divisor 4 must divide the image size 40x30"});
+    expect_bad_input(ws, run_raster(ws, {"render", scene.string(), "-o", image, "--depth-out",
+                                         (ws.out() / "depth.png").string(), "--resolution-divisor", "2"}),
+                     {"no depth image at resolution divisor 2"});
+    expect_bad_input(ws, run_raster(ws, {"compare", scene.string(), "--resolution-divisor", "2"}),
+                     {"is not compared", "raster tradeoff"});
+}
+
 TEST(Cli, invalidShadingExitsTwo) {
     Workspace ws;
     const fs::path scene = ws.write_scene("scene.yaml", kScene);

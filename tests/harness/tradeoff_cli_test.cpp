@@ -1,4 +1,5 @@
 // `raster tradeoff` on the command line: the CSV, JSON and SVG it writes, its help, and its bad input.
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -96,6 +97,15 @@ TEST(TradeoffCli, writesParsableCsvJsonAndSvgWholeAndOnlyThose) {
     EXPECT_EQ(s["modes"][1]["settings"]["samples"], 4);
     EXPECT_EQ(s["modes"][2]["settings"]["samples"], 1);
     EXPECT_EQ(s["modes"][2]["settings"]["shading"], "unlit");  // fastest moves only per-sample lighting
+    // fastest renders at half resolution, which is not compared sample by sample: its counts are null, its RMSE
+    // and coverage error measured; the others are compared.
+    EXPECT_EQ(s["modes"][2]["settings"]["resolution_divisor"], 2);
+    EXPECT_TRUE(s["modes"][2]["genuine"].is_null());
+    EXPECT_TRUE(s["modes"][2]["ambiguous"].is_null());
+    EXPECT_GT(s["modes"][2]["color_rmse"].get<double>(), 0.0);
+    EXPECT_TRUE(s["modes"][2]["coverage_error"].is_number());
+    EXPECT_TRUE(s["modes"][1]["genuine"].is_number());
+    EXPECT_EQ(s["modes"][2]["samples"], 32 * 24);
     EXPECT_EQ(s["front"].size(), on_front);
     EXPECT_GE(on_front, 1u);
 
@@ -106,6 +116,14 @@ TEST(TradeoffCli, writesParsableCsvJsonAndSvgWholeAndOnlyThose) {
     EXPECT_EQ(header.back(), "on_front");
     for (size_t i = 1; i < lines.size(); ++i) EXPECT_EQ(split(lines[i], ',').size(), header.size()) << lines[i];
     EXPECT_EQ(split(lines[2], ',')[1], "samples4");
+    const std::vector<std::string> fastest = split(lines[3], ',');
+    const auto column = [&](const char* name) {
+        return static_cast<size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    };
+    ASSERT_LT(column("genuine"), header.size());
+    EXPECT_EQ(fastest[column("resolution_divisor")], "2");
+    EXPECT_EQ(fastest[column("genuine")], "");  // not compared
+    EXPECT_EQ(split(lines[2], ',')[column("resolution_divisor")], "1");
 
     const std::string svg = read_text(out / "pareto.svg");
     std::string problem;

@@ -116,6 +116,16 @@ TEST(TradeoffModes, namesAreUniqueAndEachModeChangesWhatItsNameSays) {
     EXPECT_EQ(fastest.modes.interpolation, Interpolation::perspective);
     EXPECT_EQ(fastest.modes.depth, DepthFormat::reversed_z);
     EXPECT_EQ(fastest.modes.clipping, Clipping::full);
+    // Half resolution where 2 divides the size (the default 640 x 480), native where it does not: a mode never
+    // makes a scene invalid.
+    EXPECT_EQ(fastest.resolution_divisor, 2);
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("half-resolution"), base).resolution_divisor, 2);
+    RenderSettings odd = base;
+    odd.width = 641;
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("fastest"), odd).resolution_divisor, 1);
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("half-resolution"), odd).resolution_divisor, 1);
+    EXPECT_EQ(apply_mode(*find_tradeoff_mode("exact"), fastest).resolution_divisor, 1);
+    EXPECT_FALSE(same_mode_settings(base, apply_mode(*find_tradeoff_mode("half-resolution"), base)));
 }
 
 TEST(TradeoffModes, theDefaultSweepLeavesOutModesThatRepeatTheBaseline) {

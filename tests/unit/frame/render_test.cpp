@@ -14,6 +14,7 @@
 #include "raster/compat/scene_loader.h"
 #include "raster/transform/transform.h"
 #include "raster/geometry/vertex_stage.h"
+#include "tests/support/reference_upscale.h"
 
 namespace raster {
 namespace {
@@ -44,6 +45,31 @@ TEST(Render, sameBytesForAnyThreadCount) {
         EXPECT_EQ(one.image.pixels, two.image.pixels) << name;
         EXPECT_EQ(one.image.pixels, five.image.pixels) << name;
     }
+}
+
+// A reduced-resolution frame is the scene's frame at the internal size, every stage included (shadows, textures,
+// transparency, alpha), with its image stretched by the upscale's convention: the native frame there is what the
+// oracle judges everywhere else, and the stretch is written out independently (tests/support/reference_upscale.h).
+TEST(Render, aReducedResolutionFrameIsTheNativeFrameAtTheInternalSizeUpscaled) {
+    for (const char* name : {"teapot.yaml", "shadows_and_glass.yaml", "textured_cube.yaml", "near_crossing.yaml"})
+        for (int divisor : {2, 4}) {
+            Scene scene = load_scene(kCorpus + name);
+            Scene internal = scene;
+            internal.settings.width /= divisor;
+            internal.settings.height /= divisor;
+            scene.settings.resolution_divisor = divisor;
+            ASSERT_EQ(scene.settings.width % divisor, 0) << name;
+            RenderOptions options;
+            options.alpha = divisor == 4;
+            const RenderResult reduced = render(scene, options), native = render(internal, options);
+            const std::string what = std::string(name) + " at divisor " + std::to_string(divisor);
+            EXPECT_EQ(reduced.image.width, scene.settings.width) << what;
+            EXPECT_EQ(reduced.image.height, scene.settings.height) << what;
+            EXPECT_EQ(reduced.image.pixels, test::reference_upscale(native.image, divisor).pixels) << what;
+            EXPECT_EQ(reduced.visibility.width, internal.settings.width) << what;
+            EXPECT_EQ(reduced.visibility.triangle, native.visibility.triangle) << what;
+            EXPECT_EQ(reduced.stats.samples, native.stats.samples) << what;
+        }
 }
 
 // A backend of the test's own: the reference backend's drawing, every call recorded.
