@@ -68,6 +68,10 @@ int run_grade(const GradeFlags& flags, std::ostream& out, std::ostream& err) {
         if (file.request.self_check)
             throw InputError(flags.scene, 0, 0,
                              "this file asks for a check of its own, not an image: there is nothing to grade");
+        if (scene.settings.resolution_divisor > 1)
+            throw InputError(flags.scene, 0, 0,
+                             "--resolution-divisor is how raster renders; an image is graded at its own size, so "
+                             "leave it out");
         if (std::string problem = harness::comparison_problem(scene); !problem.empty())
             throw InputError(flags.scene, 0, 0, problem);
         image = harness::read_image_file(flags.image, 3);

@@ -91,8 +91,12 @@ std::vector<const harness::TradeoffMode*> modes_for(const TradeoffFlags& flags, 
         bool repeated = false;
         for (const harness::TradeoffMode* earlier : modes) repeated = repeated || earlier == mode;
         if (repeated) continue;
-        if (std::string problem = settings_problem(harness::apply_mode(*mode, scene.settings)); !problem.empty())
+        const RenderSettings settings = harness::apply_mode(*mode, scene.settings);
+        if (std::string problem = settings_problem(settings); !problem.empty())
             throw InputError(scene.path, 0, 0, "mode " + name + ": " + problem);
+        if (name != "baseline" && harness::same_mode_settings(settings, scene.settings))
+            err << "raster tradeoff: warning: " << scene.path << ": mode " << name
+                << " changes nothing on this scene (measured as the baseline is)\n";
         modes.push_back(mode);
     }
     return modes;

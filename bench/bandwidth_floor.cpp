@@ -1,4 +1,4 @@
-// The memory floor: colour and depth planes memset once per frame, a tile row per task, on kThreads threads.
+// The memory floor: colour and depth planes memset once per frame, an 8-row strip per task, on kThreads threads.
 #include "bench/bandwidth_floor.h"
 
 #include <algorithm>
@@ -11,7 +11,7 @@
 namespace raster_bench {
 namespace {
 
-constexpr int kRowsPerTask = 8;  // raster's tiles are 8 pixels tall (kTileSize)
+constexpr int kRowsPerTask = 8;  // 8-row strips: raster's blocks are 8 pixels tall (kBlockSize)
 
 }  // namespace
 

@@ -1,6 +1,6 @@
-// The memory floor of a frame: writing its colour image and its depth plane once, with memset, on raster's
-// threads, in raster's tile rows. No renderer can write a frame faster; raster's frame time over it says how much
-// of the frame is work beyond that.
+// The memory floor of a frame: writing its colour image and one depth value per pixel once, with memset, on raster's
+// threads, in 8-row strips. A reference for the frame's time rather than a strict bound (raster's tiled frame keeps
+// depth in per-tile scratch); raster's frame time over it says how much of the frame is work beyond writing it.
 #pragma once
 
 #include <string>

@@ -34,7 +34,7 @@ struct ModeResult {
     RenderSettings settings;       // the scene's settings with the mode applied
     std::vector<double> times_ms;  // each timed frame
     double median_ms = 0;
-    uint64_t samples = 0;                 // width * height * samples per pixel: what genuine and ambiguous count
+    uint64_t samples = 0;  // width * height * samples per pixel (the internal frame's at a divisor above 1)
     uint64_t genuine = 0, ambiguous = 0;  // compare_scene's totals for the scene in this mode (genuine: judged or not)
     // False for a mode at a resolution divisor above 1, which compare_scene refuses: genuine and ambiguous are not
     // measured (JSON null, CSV empty); its RMSE and coverage error are.

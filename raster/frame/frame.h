@@ -32,7 +32,7 @@ struct RenderStats {
     size_t triangles = 0;        // scene triangles in
     size_t clipped = 0;          // triangles that crossed a clip plane
     size_t rasterized = 0;       // screen triangles after clipping, fan splitting, culling and degeneracy
-    size_t samples = 0;          // width * height * samples per pixel
+    size_t samples = 0;          // width * height * samples per pixel (of the internal frame at a divisor above 1)
     size_t covered_samples = 0;  // samples with a visible triangle
     size_t hidden_blocks = 0;    // tiled renderer: (triangle, 8x8 block) pairs skipped by hierarchical Z
     // Wall time of each stage. The tiled renderer rasterizes and shades tile by tile, interleaved: its ms_raster

@@ -2,6 +2,8 @@
 // and a reduced-resolution frame's upscale.
 #include "raster/frame/render.h"
 
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "raster/core/stopwatch.h"
@@ -101,6 +103,9 @@ void render_frame(const Scene& scene, const RenderOptions& options, const Raster
                   RenderResult& result) {
     const int divisor = scene.settings.resolution_divisor;
     if (divisor == 1) return render_native(scene, options, backend, result);
+    if (!valid_resolution_divisor(divisor) || scene.settings.width % divisor != 0 || scene.settings.height % divisor != 0)
+        throw std::invalid_argument("render_frame: resolution divisor " + std::to_string(divisor) +
+                                    " is not 2 or 4 dividing the image size (validate the scene first)");
     // Reduced resolution: the whole frame at width/d x height/d (its visibility buffer stays at that size), then
     // its image stretched to the output size.
     const auto start = Clock::now();

@@ -1,5 +1,7 @@
 // The rasterizer's public entry point and the frame's order, written once: a valid Scene in, its visibility buffer
-// and image out, with statistics. Whichever backend draws (options.path), the frame runs
+// and image out, with statistics (at a resolution divisor d above 1 the visibility buffer and the statistics are
+// the internal frame's, width/d x height/d, and the image is stretched to the scene's size). Whichever backend
+// draws (options.path), the frame runs
 //   front end (vertex stage, cull, clip, setup) -> shadow pass -> opaque raster -> resolve -> transparency pass.
 #pragma once
 

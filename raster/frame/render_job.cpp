@@ -18,6 +18,10 @@ void run_render_job(const Scene& scene, const RenderJob& job, const Renderer& re
     if (depth && scene.settings.resolution_divisor > 1)
         throw InputError("no depth image at resolution divisor " + std::to_string(scene.settings.resolution_divisor) +
                          ": the depth buffer is the internal frame's, smaller than the image");
+    if (job.options.alpha && scene.settings.resolution_divisor > 1)
+        throw InputError("no alpha at resolution divisor " + std::to_string(scene.settings.resolution_divisor) +
+                         ": the stretch blends each channel alone, so an uncovered pixel's background colour would "
+                         "bleed into its covered neighbours' RGB");
     RenderOptions options = job.options;
     options.keep_visibility = depth || job.keep_visibility;  // the full-frame sample planes, only if read
     out.frame_ms.clear();

@@ -45,8 +45,8 @@ public:
 // Renders job.repeat frames of the valid scene on `renderer`, keeping the visibility buffer when a depth output or
 // job.keep_visibility needs it, then writes every output of the last frame in order, each whole (temp file and
 // rename), its encoding on job.options.threads threads. Throws OutputError when an output cannot be written (the
-// outputs before it stay written), InputError from the renderer or for a depth output at a resolution divisor
-// above 1, and std::invalid_argument when a depth output is asked of a renderer that gives no visibility buffer.
+// outputs before it stay written), InputError from the renderer or for a depth output or alpha at a
+// resolution divisor above 1, and std::invalid_argument when a depth output is asked of a renderer that gives no visibility buffer.
 void run_render_job(const Scene& scene, const RenderJob& job, const Renderer& renderer, RenderedFrame& out);
 
 }  // namespace raster

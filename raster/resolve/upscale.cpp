@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "raster/core/parallel.h"
 #include "raster/resolve/resolve.h"
@@ -74,6 +76,11 @@ void blend_rows(const uint16_t* a, const uint16_t* b, uint16_t first_weight, uin
 }  // namespace
 
 void upscale_image(const Image& internal, int divisor, int threads, std::vector<uint16_t>& rows, Image& out) {
+    if (divisor != 1 && divisor != 2 && divisor != 4)
+        throw std::invalid_argument("upscale_image: divisor " + std::to_string(divisor) + " is not 1, 2 or 4");
+    if (internal.channels < 1 || internal.channels > 4)
+        throw std::invalid_argument("upscale_image: " + std::to_string(internal.channels) + " channels, not 1 to 4");
+    if (&internal == &out) throw std::invalid_argument("upscale_image: the output is the input");
     const int channels = internal.channels;
     const int width = internal.width * divisor, height = internal.height * divisor;
     size_image(out, width, height, channels);

@@ -15,8 +15,10 @@
 namespace raster {
 
 // Stretches `internal` to `out` (divisor times its width and height, the same channels) by the convention above,
-// on `threads` threads (0: all cores); `rows` is scratch that a renderer keeps from frame to frame. `divisor` is
-// 2 or 4; 1 copies. Images of 1 to 4 channels.
+// on `threads` threads (0: all cores); `rows` is scratch that a renderer keeps from frame to frame (each worker
+// thread also keeps a row's phases). `divisor` is 2 or 4; 1 copies. Images of 1 to 4 channels, each blended on its
+// own (so straight alpha is not premultiplied: raster refuses alpha at a divisor above 1). Throws
+// std::invalid_argument for another divisor or channel count, or when `out` is `internal`.
 void upscale_image(const Image& internal, int divisor, int threads, std::vector<uint16_t>& rows, Image& out);
 
 }  // namespace raster

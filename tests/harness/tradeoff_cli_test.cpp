@@ -162,6 +162,18 @@ TEST(TradeoffCli, helpNamesEveryFlagAndListModesNamesEveryMode) {
         EXPECT_NE(list.out.find(mode.name + " "), std::string::npos) << mode.name;
 }
 
+// A mode named in --modes that changes nothing on a scene (half resolution where 2 does not divide the size) is
+// measured, under a warning that says so.
+TEST(TradeoffCli, aNamedModeThatChangesNothingOnTheSceneIsWarnedAbout) {
+    TempDir dir;
+    const fs::path scene = small_scene(dir, "single_triangle.yaml", 63, 48);
+    const CliRun r = run_raster({"tradeoff", scene.string(), "-o", (dir / "out").string(), "--modes",
+                                 "baseline,half-resolution,samples4", "--runs", "1", "--reference-grid", "2"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find("mode half-resolution changes nothing on this scene"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("mode samples4 changes nothing"), std::string::npos) << r.err;
+}
+
 TEST(TradeoffCli, badInputExitsTwoNamingTheProblemAndWritesNothing) {
     TempDir dir;
     const fs::path out = dir / "out";

@@ -48,7 +48,7 @@ TEST(Render, sameBytesForAnyThreadCount) {
 }
 
 // A reduced-resolution frame is the scene's frame at the internal size, every stage included (shadows, textures,
-// transparency, alpha), with its image stretched by the upscale's convention: the native frame there is what the
+// transparency, clipping), with its image stretched by the upscale's convention: the native frame there is what the
 // oracle judges everywhere else, and the stretch is written out independently (tests/support/reference_upscale.h).
 TEST(Render, aReducedResolutionFrameIsTheNativeFrameAtTheInternalSizeUpscaled) {
     for (const char* name : {"teapot.yaml", "shadows_and_glass.yaml", "textured_cube.yaml", "near_crossing.yaml"})
@@ -59,9 +59,7 @@ TEST(Render, aReducedResolutionFrameIsTheNativeFrameAtTheInternalSizeUpscaled) {
             internal.settings.height /= divisor;
             scene.settings.resolution_divisor = divisor;
             ASSERT_EQ(scene.settings.width % divisor, 0) << name;
-            RenderOptions options;
-            options.alpha = divisor == 4;
-            const RenderResult reduced = render(scene, options), native = render(internal, options);
+            const RenderResult reduced = render(scene, RenderOptions{}), native = render(internal, RenderOptions{});
             const std::string what = std::string(name) + " at divisor " + std::to_string(divisor);
             EXPECT_EQ(reduced.image.width, scene.settings.width) << what;
             EXPECT_EQ(reduced.image.height, scene.settings.height) << what;
@@ -70,6 +68,21 @@ TEST(Render, aReducedResolutionFrameIsTheNativeFrameAtTheInternalSizeUpscaled) {
             EXPECT_EQ(reduced.visibility.triangle, native.visibility.triangle) << what;
             EXPECT_EQ(reduced.stats.samples, native.stats.samples) << what;
         }
+}
+
+// One result reused across frames whose divisors change (its image and the upscale's buffers swap, shrink and grow)
+// gives each frame the bytes a fresh render gives.
+TEST(Render, aResultReusedAcrossResolutionDivisorsGivesEachFramesOwnBytes) {
+    Scene scene = load_scene(kCorpus + "shadows_and_glass.yaml");
+    RenderResult reused;
+    for (int divisor : {2, 1, 4, 2, 4, 1, 2}) {
+        scene.settings.resolution_divisor = divisor;
+        render_into(scene, RenderOptions{}, reused);
+        const RenderResult fresh = render(scene, RenderOptions{});
+        EXPECT_EQ(reused.image.width, scene.settings.width) << divisor;
+        EXPECT_EQ(reused.image.pixels, fresh.image.pixels) << "divisor " << divisor;
+        EXPECT_EQ(reused.stats.samples, fresh.stats.samples) << divisor;
+    }
 }
 
 // A backend of the test's own: the reference backend's drawing, every call recorded.

@@ -2,6 +2,7 @@
 #include "raster/resolve/upscale.h"
 
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -67,8 +68,34 @@ TEST(Upscale, divisorOneCopiesAndReusedBuffersGiveTheSameBytes) {
     EXPECT_EQ(out.pixels, small.pixels);
     const Image large = random_image(random, 40, 30, 4);
     upscale_image(large, 2, 2, rows, out);  // the buffers grow
+    EXPECT_EQ(out.pixels, test::reference_upscale(large, 2).pixels);
     upscale_image(small, 2, 2, rows, out);  // and shrink: nothing left from the larger frame
     EXPECT_EQ(out.pixels, test::reference_upscale(small, 2).pixels);
+}
+
+// Images taller than a parallel task's band of rows (16), on 1, 2 and 3 threads: the bands meet without a seam.
+TEST(Upscale, tallImagesSplitIntoBandsOnAnyThreadCountGiveTheSameBytes) {
+    std::mt19937 random(11);
+    std::vector<uint16_t> rows;
+    for (int divisor : {2, 4}) {
+        const Image tall = random_image(random, 7, 41, 3);
+        const Image expected = test::reference_upscale(tall, divisor);
+        for (int threads : {1, 2, 3}) {
+            Image out;
+            upscale_image(tall, divisor, threads, rows, out);
+            EXPECT_EQ(out.pixels, expected.pixels) << divisor << " on " << threads << " threads";
+        }
+    }
+}
+
+TEST(Upscale, anotherDivisorOrChannelCountOrTheInputAsOutputIsRefused) {
+    std::vector<uint16_t> rows;
+    Image image(4, 4, 3), out;
+    EXPECT_THROW(upscale_image(image, 3, 1, rows, out), std::invalid_argument);
+    EXPECT_THROW(upscale_image(image, 0, 1, rows, out), std::invalid_argument);
+    EXPECT_THROW(upscale_image(image, 2, 1, rows, image), std::invalid_argument);
+    Image five(2, 2, 5);
+    EXPECT_THROW(upscale_image(five, 2, 1, rows, out), std::invalid_argument);
 }
 
 }  // namespace
